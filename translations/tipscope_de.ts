@@ -331,6 +331,218 @@
     </message>
 </context>
 <context>
+    <name>BoardReport</name>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="66"/>
+        <source>PASS: every joint within its limits</source>
+        <translation>BESTANDEN: jede Lötstelle innerhalb ihrer Grenzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="68"/>
+        <source>FAIL: joints outside their limits</source>
+        <translation>NICHT BESTANDEN: Lötstellen außerhalb ihrer Grenzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="70"/>
+        <source>NOT JUDGED: no joint failed, but some could not be judged</source>
+        <translation>NICHT BEURTEILT: keine Lötstelle fiel durch, aber einige ließen sich nicht beurteilen</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="74"/>
+        <source>NO JOINTS: the journal holds events of this board only</source>
+        <translation>KEINE LÖTSTELLEN: das Journal enthält nur Ereignisse dieser Platine</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="106"/>
+        <source>%1 ± %2</source>
+        <translation>%1 ± %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="115"/>
+        <source>%1 (bounded)</source>
+        <translation>%1 (eingegrenzt)</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="116"/>
+        <source>%1 ± %2 ms</source>
+        <translation>%1 ± %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="134"/>
+        <location filename="../lib/report/boardpdf.cpp" line="307"/>
+        <source>Board record: %1</source>
+        <translation>Platinenbericht: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="144"/>
+        <source>Made: %1 to %2</source>
+        <translation>Gefertigt: %1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="147"/>
+        <source>Work order: %1</source>
+        <translation>Auftrag: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="150"/>
+        <source>Operator: %1</source>
+        <translation>Bediener: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="153"/>
+        <source>Joints: %1 (%2)</source>
+        <translation>Lötstellen: %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="166"/>
+        <location filename="../lib/report/boardpdf.cpp" line="223"/>
+        <location filename="../lib/report/boardpdf.cpp" line="250"/>
+        <source>Station</source>
+        <translation>Station</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="169"/>
+        <source>Operator</source>
+        <translation>Bediener</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="175"/>
+        <location filename="../lib/report/boardpdf.cpp" line="224"/>
+        <source>Joints</source>
+        <translation>Lötstellen</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="186"/>
+        <source>#%1 %2, port %3: dip %4, recovery %5, %6</source>
+        <translation>#%1 %2, Port %3: Einbruch %4, Erholung %5, %6</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="193"/>
+        <source>Worst joints</source>
+        <translation>Schlechteste Lötstellen</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="194"/>
+        <source>No curves: the journal keeps each joint&apos;s figures, not the tip&apos;s readings during it.</source>
+        <translation>Keine Kurven: das Journal behält die Kennwerte jeder Lötstelle, nicht die Messwerte der Spitze währenddessen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="201"/>
+        <source>not yet known: %1 joints of this tip; its first %2 recovered ones are the baseline</source>
+        <translation>noch nicht bekannt: %1 Lötstellen dieser Spitze; ihre ersten %2 erholten bilden die Grundlinie</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="206"/>
+        <source>%1 s when plugged in; no joint since</source>
+        <translation>%1 s beim Einstecken; seitdem keine Lötstelle</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="207"/>
+        <source>recovers in %1 s now, %2 s when plugged in (%3)</source>
+        <translation>erholt sich jetzt in %1 s, beim Einstecken in %2 s (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="223"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="224"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="225"/>
+        <source>Setpoints</source>
+        <translation>Sollwerte</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="225"/>
+        <source>Plugged in</source>
+        <translation>Eingesteckt</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="226"/>
+        <source>Tip wear</source>
+        <translation>Spitzenverschleiß</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="227"/>
+        <source>Tools and settings</source>
+        <translation>Werkzeuge und Einstellungen</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="237"/>
+        <source>, port %1</source>
+        <translation>, Port %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="250"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="251"/>
+        <source>What happened</source>
+        <translation>Was geschah</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="253"/>
+        <source>None in the journal.</source>
+        <translation>Keine im Journal.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="258"/>
+        <source>Profile applied before</source>
+        <translation>Zuvor angewendetes Profil</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="259"/>
+        <source>Faults and events while it was made</source>
+        <translation>Fehler und Ereignisse während der Fertigung</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="264"/>
+        <source>The limits each joint was judged by: the journal does not keep them; a failed joint&apos;s warning among the events names the limit it broke.</source>
+        <translation>Die Grenzen, nach denen jede Lötstelle beurteilt wurde: das Journal behält sie nicht; die Warnung einer durchgefallenen Lötstelle unter den Ereignissen nennt die verletzte Grenze.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="266"/>
+        <source>The station&apos;s settings as they stood: the journal keeps only changes made through TipScope (writes and profiles), not those made at the station.</source>
+        <translation>Die Einstellungen der Station, wie sie waren: das Journal behält nur Änderungen über TipScope (Schreibvorgänge und Profile), nicht die an der Station selbst.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="269"/>
+        <source>Curves of the joints: the journal keeps each joint&apos;s figures, not the tip&apos;s readings.</source>
+        <translation>Kurven der Lötstellen: das Journal behält die Kennwerte jeder Lötstelle, nicht die Messwerte der Spitze.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="272"/>
+        <source>Not in the journal</source>
+        <translation>Nicht im Journal</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="277"/>
+        <source>Written by TipScope %1 on %2 from the journal %3</source>
+        <translation>Erstellt von TipScope %1 am %2 aus dem Journal %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="279"/>
+        <source>Times are local; figures as measured from the station&apos;s readings, each with how sure it is.</source>
+        <translation>Zeiten in Ortszeit; Kennwerte wie aus den Messwerten der Station gemessen, jeweils mit ihrer Unsicherheit.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="281"/>
+        <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
+        <translation>Geprüft von: ______________________   Datum: ____________   Unterschrift: ______________________</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="298"/>
+        <source>cannot write %1: a PDF needs fonts, which need a graphical application (QGuiApplication)</source>
+        <translation>kann %1 nicht schreiben: ein PDF braucht Schriften, und die brauchen eine grafische Anwendung (QGuiApplication)</translation>
+    </message>
+</context>
+<context>
     <name>Catalog</name>
     <message>
         <location filename="../lib/protocol/catalog.cpp" line="195"/>
@@ -1831,6 +2043,24 @@
     </message>
 </context>
 <context>
+    <name>CliBoard</name>
+    <message>
+        <location filename="../app/cli/cliboard.cpp" line="31"/>
+        <source>give one of --json, --csv and --pdf FILE</source>
+        <translation>nur eines von --json, --csv und --pdf DATEI angeben</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliboard.cpp" line="33"/>
+        <source>board takes one board serial</source>
+        <translation>board nimmt eine Platinen-Seriennummer</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliboard.cpp" line="57"/>
+        <source>the journal has no board &apos;%1&apos;: no joint or event carries that serial</source>
+        <translation>das Journal kennt keine Platine '%1': keine Lötstelle und kein Ereignis trägt diese Seriennummer</translation>
+    </message>
+</context>
+<context>
     <name>CliCommands</name>
     <message>
         <location filename="../app/cli/clicommands.cpp" line="41"/>
@@ -2006,7 +2236,7 @@
         <translation>--verdict nimmt ok, slow-recovery, too-deep oder incomplete</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="177"/>
+        <location filename="../app/cli/clijoints.cpp" line="156"/>
         <source>tipscope-cli: give --json or --csv, not both</source>
         <translation>tipscope-cli: geben Sie --json oder --csv an, nicht beides</translation>
     </message>
@@ -2170,67 +2400,7 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="152"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>unbekannter Befehl &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="196"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="202"/>
-        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
-        <translation>--workspace erwartet eine Datei, und nur eines von --port, --tcp, --demo, --workspace</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="209"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="217"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="222"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud erwartet eine Baudrate wie 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="229"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity erwartet none, even oder odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="233"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits erwartet 1 oder 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="242"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="250"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="253"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="181"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 braucht einen Wert</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="79"/>
+        <location filename="../app/cli/clioptions.cpp" line="84"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |
                      --workspace FILE] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -2277,6 +2447,10 @@ Commands:
   journal [show [--json] | retention DAYS] [--journal FILE]
                             what the journal holds, and how many days it keeps
                             records (0: all); every TipScope program shares it
+  board SERIAL [--json | --csv | --pdf FILE] [--journal FILE]
+                            one board&apos;s record: every joint stamped with the board
+                            serial, its tools&apos; wear, the events while it was made;
+                            --csv its joints as joints --csv; --pdf a document to sign
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
 built-in simulated DME station (address 01) and SFR feeder (address 10);
@@ -2285,10 +2459,11 @@ built-in simulated DME station (address 01) and SFR feeder (address 10);
 --workspace runs the command on every line of a workspace file at once, each output
 line prefixed with the line&apos;s name; monitor --csv writes a file per line.
 
-Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
-3 the device answered NAK, or a read-back or profile check failed;
-4 no valid answer; 5 transport error; the journal (joints, journal show): 6 missing,
-7 damaged, 8 newer, 9 locked, 10 not accessible, 11 disk full or failing.
+Exit codes: 0 ok; 1 usage, or a board serial the journal does not hold; 2 value
+refused before sending (nothing was written); 3 the device answered NAK, or a
+read-back or profile check failed; 4 no valid answer; 5 transport error; the journal
+(joints, board, journal show): 6 missing, 7 damaged, 8 newer, 9 locked, 10 not
+accessible, 11 disk full or failing.
 </source>
         <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo | --demo-activity |
                       --workspace DATEI] [--baud N]
@@ -2296,8 +2471,8 @@ Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
                      [--timeout MS] [--retries N] [--verbose] BEFEHL ...
 
 Befehle:
-  detect [--json] [--scan]  eine Zeile pro Gerät: &quot;&lt;Adresse oder --&gt; &lt;Modell&gt; &lt;Familie&gt; &lt;Version&gt;&quot;
-  read CODE... [--raw]      eine Zeile pro Code: &quot;&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;&quot;
+  detect [--json] [--scan]  eine Zeile pro Gerät: "&lt;Adresse oder --&gt; &lt;Modell&gt; &lt;Familie&gt; &lt;Version&gt;"
+  read CODE... [--raw]      eine Zeile pro Code: "&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;"
   write CODE WERT [--raw [--force]]
                             prüfen (MIT und MAT zuerst gelesen), senden und zurücklesen;
                             --raw sendet das Datenfeld, geprüft außer mit --force
@@ -2338,6 +2513,11 @@ Befehle:
   journal [show [--json] | retention TAGE] [--journal DATEI]
                             was das Journal enthält und wie viele Tage es
                             Einträge behält (0: alle); alle TipScope-Programme teilen es
+  board SERIENNR [--json | --csv | --pdf DATEI] [--journal DATEI]
+                            der Bericht einer Platine: jede Lötstelle mit ihrer Serien-
+                            nummer, der Verschleiß ihrer Spitzen, die Ereignisse dabei;
+                            --csv ihre Lötstellen wie joints --csv; --pdf ein Dokument
+                            zum Unterschreiben
 
 Ohne --addr oder --no-addr wird das Gerät automatisch gesucht. --demo spricht mit der
 eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10);
@@ -2346,44 +2526,105 @@ eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (A
 --workspace führt den Befehl auf jeder Leitung einer Arbeitsbereich-Datei zugleich aus,
 jede Ausgabezeile mit dem Namen der Leitung davor; monitor --csv schreibt eine Datei pro Leitung.
 
-Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschrieben);
-3 das Gerät hat mit NAK geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen;
-4 keine gültige Antwort; 5 Übertragungsfehler; das Journal (joints, journal show): 6 fehlt,
-7 beschädigt, 8 neuer, 9 gesperrt, 10 nicht zugänglich, 11 Datenträger voll oder fehlerhaft.
+Exit-Codes: 0 OK; 1 Aufruffehler, oder eine Platinen-Seriennummer, die das Journal nicht
+kennt; 2 Wert vor dem Senden abgelehnt (nichts geschrieben); 3 das Gerät hat mit NAK
+geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gültige Antwort;
+5 Übertragungsfehler; das Journal (joints, board, journal show): 6 fehlt, 7 beschädigt,
+8 neuer, 9 gesperrt, 10 nicht zugänglich, 11 Datenträger voll oder fehlerhaft.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="185"/>
+        <location filename="../app/cli/clioptions.cpp" line="162"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="206"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="212"/>
+        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
+        <translation>--workspace erwartet eine Datei, und nur eines von --port, --tcp, --demo, --workspace</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="219"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="227"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="232"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud erwartet eine Baudrate wie 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="239"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity erwartet none, even oder odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="243"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits erwartet 1 oder 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="252"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="260"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="263"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="191"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 braucht einen Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="195"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="257"/>
+        <location filename="../app/cli/clioptions.cpp" line="267"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="258"/>
+        <location filename="../app/cli/clioptions.cpp" line="268"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="264"/>
+        <location filename="../app/cli/clioptions.cpp" line="274"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="267"/>
+        <location filename="../app/cli/clioptions.cpp" line="277"/>
         <source>--workspace runs detect, monitor, dump or joints, not %1</source>
         <translation>--workspace führt detect, monitor, dump oder joints aus, nicht %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="270"/>
+        <location filename="../app/cli/clioptions.cpp" line="280"/>
         <source>--csv-one-file goes with --workspace and --csv FILE</source>
         <translation>--csv-one-file gehört zu --workspace und --csv DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="273"/>
+        <location filename="../app/cli/clioptions.cpp" line="283"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -4617,12 +4858,12 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>TipWear</name>
     <message>
-        <location filename="../lib/model/joints/tipwear.cpp" line="63"/>
+        <location filename="../lib/model/joints/tipwear.cpp" line="70"/>
         <source>tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when it was plugged in</source>
         <translation>Spitze verschleißt: %1 erholt sich in %2 s (Median der letzten %3 Lötstellen), %4 s nach dem Einstecken</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/tipwear.cpp" line="66"/>
+        <location filename="../lib/model/joints/tipwear.cpp" line="73"/>
         <source>the tool</source>
         <translation>das Werkzeug</translation>
     </message>
@@ -4927,6 +5168,46 @@ Dauerhaft mit dieser udev-Regel:
         <location filename="../app/gui/main.cpp" line="121"/>
         <source>tipscope: --plant takes the broker as HOST:PORT</source>
         <translation>tipscope: --plant erwartet den Broker als HOST:PORT</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::BoardReportDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="23"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="74"/>
+        <source>Board report</source>
+        <translation>Platinenbericht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="33"/>
+        <source>Every joint the journal keeps for the board, its result, its tools&apos; wear and the events while it was made, as a PDF to sign.</source>
+        <translation>Jede Lötstelle, die das Journal für die Platine behält, ihr Ergebnis, der Verschleiß ihrer Spitzen und die Ereignisse während der Fertigung, als PDF zum Unterschreiben.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="39"/>
+        <source>Board serial:</source>
+        <translation>Platinen-Seriennummer:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="42"/>
+        <source>Write PDF…</source>
+        <translation>PDF schreiben…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="51"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="69"/>
+        <source>Give the serial of a board.</source>
+        <translation>Die Seriennummer einer Platine angeben.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="60"/>
+        <source>The journal has no board %1: no joint or event carries that serial.</source>
+        <translation>Das Journal kennt keine Platine %1: keine Lötstelle und kein Ereignis trägt diese Seriennummer.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="76"/>
+        <source>PDF documents (*.pdf)</source>
+        <translation>PDF-Dokumente (*.pdf)</translation>
     </message>
 </context>
 <context>
@@ -7142,72 +7423,77 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="62"/>
+        <location filename="../app/gui/mainwindow.cpp" line="63"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="138"/>
+        <location filename="../app/gui/mainwindow.cpp" line="139"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="142"/>
+        <location filename="../app/gui/mainwindow.cpp" line="143"/>
         <source>Work &amp;context…</source>
         <translation>Arbeits&amp;kontext…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="146"/>
+        <location filename="../app/gui/mainwindow.cpp" line="147"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
         <location filename="../app/gui/mainwindow.cpp" line="148"/>
+        <source>&amp;Board report…</source>
+        <translation>&amp;Platinenbericht…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="156"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="149"/>
+        <location filename="../app/gui/mainwindow.cpp" line="157"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="150"/>
+        <location filename="../app/gui/mainwindow.cpp" line="158"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="158"/>
+        <location filename="../app/gui/mainwindow.cpp" line="166"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="159"/>
+        <location filename="../app/gui/mainwindow.cpp" line="167"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="160"/>
+        <location filename="../app/gui/mainwindow.cpp" line="168"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="162"/>
+        <location filename="../app/gui/mainwindow.cpp" line="170"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="163"/>
+        <location filename="../app/gui/mainwindow.cpp" line="171"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="289"/>
+        <location filename="../app/gui/mainwindow.cpp" line="297"/>
         <source>new workspace</source>
         <translation>neuer Arbeitsbereich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="291"/>
+        <location filename="../app/gui/mainwindow.cpp" line="299"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n Linie)</numerusform>
@@ -7215,28 +7501,28 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="294"/>
+        <location filename="../app/gui/mainwindow.cpp" line="302"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="299"/>
+        <location filename="../app/gui/mainwindow.cpp" line="307"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="304"/>
+        <location filename="../app/gui/mainwindow.cpp" line="312"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="318"/>
-        <location filename="../app/gui/mainwindow.cpp" line="321"/>
+        <location filename="../app/gui/mainwindow.cpp" line="326"/>
+        <location filename="../app/gui/mainwindow.cpp" line="329"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="322"/>
+        <location filename="../app/gui/mainwindow.cpp" line="330"/>
         <source>Written:
 %1
 
@@ -7247,12 +7533,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="335"/>
+        <location filename="../app/gui/mainwindow.cpp" line="343"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="336"/>
+        <location filename="../app/gui/mainwindow.cpp" line="344"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>

@@ -331,6 +331,218 @@
     </message>
 </context>
 <context>
+    <name>BoardReport</name>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="66"/>
+        <source>PASS: every joint within its limits</source>
+        <translation>APROBADA: cada soldadura dentro de sus límites</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="68"/>
+        <source>FAIL: joints outside their limits</source>
+        <translation>RECHAZADA: soldaduras fuera de sus límites</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="70"/>
+        <source>NOT JUDGED: no joint failed, but some could not be judged</source>
+        <translation>SIN JUICIO: ninguna soldadura falló, pero algunas no se pudieron juzgar</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="74"/>
+        <source>NO JOINTS: the journal holds events of this board only</source>
+        <translation>SIN SOLDADURAS: el diario solo tiene eventos de esta placa</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="106"/>
+        <source>%1 ± %2</source>
+        <translation>%1 ± %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="115"/>
+        <source>%1 (bounded)</source>
+        <translation>%1 (acotada)</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="116"/>
+        <source>%1 ± %2 ms</source>
+        <translation>%1 ± %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="134"/>
+        <location filename="../lib/report/boardpdf.cpp" line="307"/>
+        <source>Board record: %1</source>
+        <translation>Registro de la placa: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="144"/>
+        <source>Made: %1 to %2</source>
+        <translation>Fabricada: %1 a %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="147"/>
+        <source>Work order: %1</source>
+        <translation>Orden de trabajo: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="150"/>
+        <source>Operator: %1</source>
+        <translation>Operario: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="153"/>
+        <source>Joints: %1 (%2)</source>
+        <translation>Soldaduras: %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="166"/>
+        <location filename="../lib/report/boardpdf.cpp" line="223"/>
+        <location filename="../lib/report/boardpdf.cpp" line="250"/>
+        <source>Station</source>
+        <translation>Estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="169"/>
+        <source>Operator</source>
+        <translation>Operario</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="175"/>
+        <location filename="../lib/report/boardpdf.cpp" line="224"/>
+        <source>Joints</source>
+        <translation>Soldaduras</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="186"/>
+        <source>#%1 %2, port %3: dip %4, recovery %5, %6</source>
+        <translation>#%1 %2, puerto %3: caída %4, recuperación %5, %6</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="193"/>
+        <source>Worst joints</source>
+        <translation>Peores soldaduras</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="194"/>
+        <source>No curves: the journal keeps each joint&apos;s figures, not the tip&apos;s readings during it.</source>
+        <translation>Sin curvas: el diario guarda las cifras de cada soldadura, no las lecturas de la punta durante ella.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="201"/>
+        <source>not yet known: %1 joints of this tip; its first %2 recovered ones are the baseline</source>
+        <translation>aún no se sabe: %1 soldaduras de esta punta; sus primeras %2 recuperadas son la referencia</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="206"/>
+        <source>%1 s when plugged in; no joint since</source>
+        <translation>%1 s al conectarla; ninguna soldadura desde entonces</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="207"/>
+        <source>recovers in %1 s now, %2 s when plugged in (%3)</source>
+        <translation>se recupera en %1 s ahora, %2 s al conectarla (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="223"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="224"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="225"/>
+        <source>Setpoints</source>
+        <translation>Consignas</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="225"/>
+        <source>Plugged in</source>
+        <translation>Conectada</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="226"/>
+        <source>Tip wear</source>
+        <translation>Desgaste de la punta</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="227"/>
+        <source>Tools and settings</source>
+        <translation>Herramientas y ajustes</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="237"/>
+        <source>, port %1</source>
+        <translation>, puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="250"/>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="251"/>
+        <source>What happened</source>
+        <translation>Qué pasó</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="253"/>
+        <source>None in the journal.</source>
+        <translation>Ninguno en el diario.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="258"/>
+        <source>Profile applied before</source>
+        <translation>Perfil aplicado antes</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="259"/>
+        <source>Faults and events while it was made</source>
+        <translation>Fallos y eventos mientras se fabricaba</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="264"/>
+        <source>The limits each joint was judged by: the journal does not keep them; a failed joint&apos;s warning among the events names the limit it broke.</source>
+        <translation>Los límites con los que se juzgó cada soldadura: el diario no los guarda; el aviso de una soldadura rechazada entre los eventos nombra el límite que superó.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="266"/>
+        <source>The station&apos;s settings as they stood: the journal keeps only changes made through TipScope (writes and profiles), not those made at the station.</source>
+        <translation>Los ajustes de la estación tal como estaban: el diario solo guarda los cambios hechos con TipScope (escrituras y perfiles), no los hechos en la estación.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="269"/>
+        <source>Curves of the joints: the journal keeps each joint&apos;s figures, not the tip&apos;s readings.</source>
+        <translation>Curvas de las soldaduras: el diario guarda las cifras de cada soldadura, no las lecturas de la punta.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="272"/>
+        <source>Not in the journal</source>
+        <translation>No está en el diario</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="277"/>
+        <source>Written by TipScope %1 on %2 from the journal %3</source>
+        <translation>Escrito por TipScope %1 el %2 a partir del diario %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="279"/>
+        <source>Times are local; figures as measured from the station&apos;s readings, each with how sure it is.</source>
+        <translation>Horas locales; cifras medidas a partir de las lecturas de la estación, cada una con su incertidumbre.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="281"/>
+        <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
+        <translation>Revisado por: ______________________   Fecha: ____________   Firma: ______________________</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="298"/>
+        <source>cannot write %1: a PDF needs fonts, which need a graphical application (QGuiApplication)</source>
+        <translation>no se puede escribir %1: un PDF necesita fuentes, y estas una aplicación gráfica (QGuiApplication)</translation>
+    </message>
+</context>
+<context>
     <name>Catalog</name>
     <message>
         <location filename="../lib/protocol/catalog.cpp" line="195"/>
@@ -1831,6 +2043,24 @@
     </message>
 </context>
 <context>
+    <name>CliBoard</name>
+    <message>
+        <location filename="../app/cli/cliboard.cpp" line="31"/>
+        <source>give one of --json, --csv and --pdf FILE</source>
+        <translation>indique solo uno de --json, --csv y --pdf ARCHIVO</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliboard.cpp" line="33"/>
+        <source>board takes one board serial</source>
+        <translation>board recibe un número de serie de placa</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliboard.cpp" line="57"/>
+        <source>the journal has no board &apos;%1&apos;: no joint or event carries that serial</source>
+        <translation>el diario no tiene la placa '%1': ninguna soldadura ni evento lleva ese número de serie</translation>
+    </message>
+</context>
+<context>
     <name>CliCommands</name>
     <message>
         <location filename="../app/cli/clicommands.cpp" line="41"/>
@@ -2006,7 +2236,7 @@
         <translation>--verdict admite ok, slow-recovery, too-deep o incomplete</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="177"/>
+        <location filename="../app/cli/clijoints.cpp" line="156"/>
         <source>tipscope-cli: give --json or --csv, not both</source>
         <translation>tipscope-cli: indique --json o --csv, no ambos</translation>
     </message>
@@ -2170,67 +2400,7 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="152"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>comando desconocido &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="196"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>indique solo una de --port, --tcp y --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="202"/>
-        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
-        <translation>--workspace requiere un archivo, y solo uno de --port, --tcp, --demo, --workspace</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="209"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="217"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="222"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud requiere una velocidad como 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="229"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity admite none, even u odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="233"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits admite 1 o 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="242"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="250"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="253"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries requiere un número de 0 a 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="181"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 necesita un valor</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="79"/>
+        <location filename="../app/cli/clioptions.cpp" line="84"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |
                      --workspace FILE] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -2277,6 +2447,10 @@ Commands:
   journal [show [--json] | retention DAYS] [--journal FILE]
                             what the journal holds, and how many days it keeps
                             records (0: all); every TipScope program shares it
+  board SERIAL [--json | --csv | --pdf FILE] [--journal FILE]
+                            one board&apos;s record: every joint stamped with the board
+                            serial, its tools&apos; wear, the events while it was made;
+                            --csv its joints as joints --csv; --pdf a document to sign
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
 built-in simulated DME station (address 01) and SFR feeder (address 10);
@@ -2285,10 +2459,11 @@ built-in simulated DME station (address 01) and SFR feeder (address 10);
 --workspace runs the command on every line of a workspace file at once, each output
 line prefixed with the line&apos;s name; monitor --csv writes a file per line.
 
-Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
-3 the device answered NAK, or a read-back or profile check failed;
-4 no valid answer; 5 transport error; the journal (joints, journal show): 6 missing,
-7 damaged, 8 newer, 9 locked, 10 not accessible, 11 disk full or failing.
+Exit codes: 0 ok; 1 usage, or a board serial the journal does not hold; 2 value
+refused before sending (nothing was written); 3 the device answered NAK, or a
+read-back or profile check failed; 4 no valid answer; 5 transport error; the journal
+(joints, board, journal show): 6 missing, 7 damaged, 8 newer, 9 locked, 10 not
+accessible, 11 disk full or failing.
 </source>
         <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo | --demo-activity |
                    --workspace ARCHIVO] [--baud N]
@@ -2296,8 +2471,8 @@ Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
                   [--timeout MS] [--retries N] [--verbose] COMANDO ...
 
 Comandos:
-  detect [--json] [--scan]  una línea por equipo: &quot;&lt;dirección o --&gt; &lt;modelo&gt; &lt;familia&gt; &lt;versión&gt;&quot;
-  read CÓDIGO... [--raw]    una línea por código: &quot;&lt;CÓDIGO&gt; &lt;valor&gt; &lt;unidad&gt;&quot;
+  detect [--json] [--scan]  una línea por equipo: "&lt;dirección o --&gt; &lt;modelo&gt; &lt;familia&gt; &lt;versión&gt;"
+  read CÓDIGO... [--raw]    una línea por código: "&lt;CÓDIGO&gt; &lt;valor&gt; &lt;unidad&gt;"
   write CÓDIGO VALOR [--raw [--force]]
                             valida (MIT y MAT leídos antes), envía y vuelve a leer;
                             --raw envía el campo de datos, comprobado salvo con --force
@@ -2336,6 +2511,11 @@ Comandos:
   journal [show [--json] | retention DÍAS] [--journal ARCHIVO]
                             lo que guarda el diario y cuántos días conserva
                             los registros (0: todos); lo comparten todos los programas
+  board SERIE [--json | --csv | --pdf ARCHIVO] [--journal ARCHIVO]
+                            el registro de una placa: cada soldadura con su número de
+                            serie, el desgaste de sus puntas, los eventos mientras se hizo;
+                            --csv sus soldaduras como joints --csv; --pdf un documento
+                            para firmar
 
 Sin --addr ni --no-addr, el equipo se busca automáticamente. --demo habla con la
 estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10);
@@ -2346,44 +2526,105 @@ de cada petición.
 --workspace ejecuta el comando en cada línea de un archivo de espacio de trabajo a la vez,
 cada línea de salida precedida del nombre de la línea; monitor --csv escribe un archivo por línea.
 
-Códigos de salida: 0 correcto; 1 error de uso; 2 valor rechazado antes de enviar (no se
-escribió nada); 3 el equipo respondió NAK, o falló una relectura o la comprobación del
-perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, journal show):
-6 no existe, 7 dañado, 8 más nuevo, 9 bloqueado, 10 no accesible, 11 disco lleno o con fallos.
+Códigos de salida: 0 correcto; 1 error de uso, o un número de serie de placa que el diario
+no tiene; 2 valor rechazado antes de enviar (no se escribió nada); 3 el equipo respondió NAK,
+o falló una relectura o la comprobación del perfil; 4 ninguna respuesta válida; 5 error de
+transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 más nuevo,
+9 bloqueado, 10 no accesible, 11 disco lleno o con fallos.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="185"/>
+        <location filename="../app/cli/clioptions.cpp" line="162"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="206"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>indique solo una de --port, --tcp y --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="212"/>
+        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
+        <translation>--workspace requiere un archivo, y solo uno de --port, --tcp, --demo, --workspace</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="219"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="227"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="232"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud requiere una velocidad como 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="239"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity admite none, even u odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="243"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits admite 1 o 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="252"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="260"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="263"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries requiere un número de 0 a 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="191"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 necesita un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="195"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="257"/>
+        <location filename="../app/cli/clioptions.cpp" line="267"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="258"/>
+        <location filename="../app/cli/clioptions.cpp" line="268"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="264"/>
+        <location filename="../app/cli/clioptions.cpp" line="274"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="267"/>
+        <location filename="../app/cli/clioptions.cpp" line="277"/>
         <source>--workspace runs detect, monitor, dump or joints, not %1</source>
         <translation>--workspace ejecuta detect, monitor, dump o joints, no %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="270"/>
+        <location filename="../app/cli/clioptions.cpp" line="280"/>
         <source>--csv-one-file goes with --workspace and --csv FILE</source>
         <translation>--csv-one-file va con --workspace y --csv ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="273"/>
+        <location filename="../app/cli/clioptions.cpp" line="283"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -4617,12 +4858,12 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>TipWear</name>
     <message>
-        <location filename="../lib/model/joints/tipwear.cpp" line="63"/>
+        <location filename="../lib/model/joints/tipwear.cpp" line="70"/>
         <source>tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when it was plugged in</source>
         <translation>punta desgastándose: %1 se recupera en %2 s (mediana de las últimas %3 soldaduras), %4 s al conectarla</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/tipwear.cpp" line="66"/>
+        <location filename="../lib/model/joints/tipwear.cpp" line="73"/>
         <source>the tool</source>
         <translation>la herramienta</translation>
     </message>
@@ -4927,6 +5168,46 @@ Hágalo permanente con esta regla de udev:
         <location filename="../app/gui/main.cpp" line="121"/>
         <source>tipscope: --plant takes the broker as HOST:PORT</source>
         <translation>tipscope: --plant espera el broker como HOST:PUERTO</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::BoardReportDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="23"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="74"/>
+        <source>Board report</source>
+        <translation>Informe de placa</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="33"/>
+        <source>Every joint the journal keeps for the board, its result, its tools&apos; wear and the events while it was made, as a PDF to sign.</source>
+        <translation>Cada soldadura que el diario guarda de la placa, su resultado, el desgaste de sus puntas y los eventos mientras se fabricaba, como PDF para firmar.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="39"/>
+        <source>Board serial:</source>
+        <translation>Número de serie de la placa:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="42"/>
+        <source>Write PDF…</source>
+        <translation>Escribir PDF…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="51"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="69"/>
+        <source>Give the serial of a board.</source>
+        <translation>Indique el número de serie de una placa.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="60"/>
+        <source>The journal has no board %1: no joint or event carries that serial.</source>
+        <translation>El diario no tiene la placa %1: ninguna soldadura ni evento lleva ese número de serie.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="76"/>
+        <source>PDF documents (*.pdf)</source>
+        <translation>Documentos PDF (*.pdf)</translation>
     </message>
 </context>
 <context>
@@ -7142,72 +7423,77 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="62"/>
+        <location filename="../app/gui/mainwindow.cpp" line="63"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="138"/>
+        <location filename="../app/gui/mainwindow.cpp" line="139"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="142"/>
+        <location filename="../app/gui/mainwindow.cpp" line="143"/>
         <source>Work &amp;context…</source>
         <translation>&amp;Contexto de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="146"/>
+        <location filename="../app/gui/mainwindow.cpp" line="147"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
         <location filename="../app/gui/mainwindow.cpp" line="148"/>
+        <source>&amp;Board report…</source>
+        <translation>Informe de &amp;placa…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="156"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="149"/>
+        <location filename="../app/gui/mainwindow.cpp" line="157"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="150"/>
+        <location filename="../app/gui/mainwindow.cpp" line="158"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="158"/>
+        <location filename="../app/gui/mainwindow.cpp" line="166"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="159"/>
+        <location filename="../app/gui/mainwindow.cpp" line="167"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="160"/>
+        <location filename="../app/gui/mainwindow.cpp" line="168"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="162"/>
+        <location filename="../app/gui/mainwindow.cpp" line="170"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="163"/>
+        <location filename="../app/gui/mainwindow.cpp" line="171"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="289"/>
+        <location filename="../app/gui/mainwindow.cpp" line="297"/>
         <source>new workspace</source>
         <translation>espacio de trabajo nuevo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="291"/>
+        <location filename="../app/gui/mainwindow.cpp" line="299"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n línea)</numerusform>
@@ -7215,28 +7501,28 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="294"/>
+        <location filename="../app/gui/mainwindow.cpp" line="302"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="299"/>
+        <location filename="../app/gui/mainwindow.cpp" line="307"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="304"/>
+        <location filename="../app/gui/mainwindow.cpp" line="312"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="318"/>
-        <location filename="../app/gui/mainwindow.cpp" line="321"/>
+        <location filename="../app/gui/mainwindow.cpp" line="326"/>
+        <location filename="../app/gui/mainwindow.cpp" line="329"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="322"/>
+        <location filename="../app/gui/mainwindow.cpp" line="330"/>
         <source>Written:
 %1
 
@@ -7247,12 +7533,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="335"/>
+        <location filename="../app/gui/mainwindow.cpp" line="343"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="336"/>
+        <location filename="../app/gui/mainwindow.cpp" line="344"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
