@@ -2057,7 +2057,7 @@
     <message>
         <location filename="../app/cli/cliboard.cpp" line="57"/>
         <source>the journal has no board &apos;%1&apos;: no joint or event carries that serial</source>
-        <translation>das Journal kennt keine Platine '%1': keine Lötstelle und kein Ereignis trägt diese Seriennummer</translation>
+        <translation>das Journal kennt keine Platine &apos;%1&apos;: keine Lötstelle und kein Ereignis trägt diese Seriennummer</translation>
     </message>
 </context>
 <context>
@@ -2471,8 +2471,8 @@ accessible, 11 disk full or failing.
                      [--timeout MS] [--retries N] [--verbose] BEFEHL ...
 
 Befehle:
-  detect [--json] [--scan]  eine Zeile pro Gerät: "&lt;Adresse oder --&gt; &lt;Modell&gt; &lt;Familie&gt; &lt;Version&gt;"
-  read CODE... [--raw]      eine Zeile pro Code: "&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;"
+  detect [--json] [--scan]  eine Zeile pro Gerät: &quot;&lt;Adresse oder --&gt; &lt;Modell&gt; &lt;Familie&gt; &lt;Version&gt;&quot;
+  read CODE... [--raw]      eine Zeile pro Code: &quot;&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;&quot;
   write CODE WERT [--raw [--force]]
                             prüfen (MIT und MAT zuerst gelesen), senden und zurücklesen;
                             --raw sendet das Datenfeld, geprüft außer mit --force
@@ -8883,32 +8883,32 @@ Möchten Sie fortfahren?</translation>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="251"/>
+        <location filename="../lib/link/requestqueue.cpp" line="252"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="260"/>
+        <location filename="../lib/link/requestqueue.cpp" line="261"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="264"/>
+        <location filename="../lib/link/requestqueue.cpp" line="265"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="282"/>
+        <location filename="../lib/link/requestqueue.cpp" line="283"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="303"/>
+        <location filename="../lib/link/requestqueue.cpp" line="304"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="321"/>
+        <location filename="../lib/link/requestqueue.cpp" line="322"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -8916,7 +8916,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="324"/>
+        <location filename="../lib/link/requestqueue.cpp" line="325"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
@@ -8924,17 +8924,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="327"/>
+        <location filename="../lib/link/requestqueue.cpp" line="328"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="398"/>
+        <location filename="../lib/link/requestqueue.cpp" line="399"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="400"/>
+        <location filename="../lib/link/requestqueue.cpp" line="401"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>
@@ -9111,17 +9111,27 @@ Möchten Sie fortfahren?</translation>
         <translation>Kein Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="63"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="54"/>
+        <source>Recording</source>
+        <translation>Aufzeichnung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="56"/>
+        <source>Cannot be played</source>
+        <translation>Nicht abspielbar</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="66"/>
         <source>No device answered</source>
         <translation>Kein Gerät hat geantwortet</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="64"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="67"/>
         <source>Connecting</source>
         <translation>Verbindung wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="65"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="68"/>
         <source>Looking for devices</source>
         <translation>Suche nach Geräten</translation>
     </message>

@@ -2057,7 +2057,7 @@
     <message>
         <location filename="../app/cli/cliboard.cpp" line="57"/>
         <source>the journal has no board &apos;%1&apos;: no joint or event carries that serial</source>
-        <translation>el diario no tiene la placa '%1': ninguna soldadura ni evento lleva ese número de serie</translation>
+        <translation>el diario no tiene la placa &apos;%1&apos;: ninguna soldadura ni evento lleva ese número de serie</translation>
     </message>
 </context>
 <context>
@@ -2471,8 +2471,8 @@ accessible, 11 disk full or failing.
                   [--timeout MS] [--retries N] [--verbose] COMANDO ...
 
 Comandos:
-  detect [--json] [--scan]  una línea por equipo: "&lt;dirección o --&gt; &lt;modelo&gt; &lt;familia&gt; &lt;versión&gt;"
-  read CÓDIGO... [--raw]    una línea por código: "&lt;CÓDIGO&gt; &lt;valor&gt; &lt;unidad&gt;"
+  detect [--json] [--scan]  una línea por equipo: &quot;&lt;dirección o --&gt; &lt;modelo&gt; &lt;familia&gt; &lt;versión&gt;&quot;
+  read CÓDIGO... [--raw]    una línea por código: &quot;&lt;CÓDIGO&gt; &lt;valor&gt; &lt;unidad&gt;&quot;
   write CÓDIGO VALOR [--raw [--force]]
                             valida (MIT y MAT leídos antes), envía y vuelve a leer;
                             --raw envía el campo de datos, comprobado salvo con --force
@@ -8883,32 +8883,32 @@ Do you want to continue?</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="251"/>
+        <location filename="../lib/link/requestqueue.cpp" line="252"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="260"/>
+        <location filename="../lib/link/requestqueue.cpp" line="261"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="264"/>
+        <location filename="../lib/link/requestqueue.cpp" line="265"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="282"/>
+        <location filename="../lib/link/requestqueue.cpp" line="283"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="303"/>
+        <location filename="../lib/link/requestqueue.cpp" line="304"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="321"/>
+        <location filename="../lib/link/requestqueue.cpp" line="322"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -8916,7 +8916,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="324"/>
+        <location filename="../lib/link/requestqueue.cpp" line="325"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -8924,17 +8924,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="327"/>
+        <location filename="../lib/link/requestqueue.cpp" line="328"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="398"/>
+        <location filename="../lib/link/requestqueue.cpp" line="399"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="400"/>
+        <location filename="../lib/link/requestqueue.cpp" line="401"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
@@ -9111,17 +9111,27 @@ Do you want to continue?</source>
         <translation>Ningún equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="63"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="54"/>
+        <source>Recording</source>
+        <translation>Grabación</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="56"/>
+        <source>Cannot be played</source>
+        <translation>No se puede reproducir</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="66"/>
         <source>No device answered</source>
         <translation>Ningún equipo ha respondido</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="64"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="67"/>
         <source>Connecting</source>
         <translation>Conectando</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="65"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="68"/>
         <source>Looking for devices</source>
         <translation>Buscando equipos</translation>
     </message>

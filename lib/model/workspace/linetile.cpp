@@ -48,10 +48,13 @@ FleetTileState LineTile::state() const {
     s.lineUp = false;
     s.lineOnly = true;
     if (session.isPlayback()) {
-        // A recording has no device to reach: how its playback goes, a problem only if refused.
-        s.lineText = session.stateText();
-        s.problems.append({session.state() == Session::State::Failed ? Level::Error : Level::Info,
-                           asSentence(session.stateText())});
+        // A recording has no device to reach: it is "up" while it plays and once played, and
+        // needs attention only when it cannot be played; the row under it says how it went.
+        const bool refused = session.state() == Session::State::Failed;
+        s.deviceName = tr("Recording");
+        s.lineUp = !refused;
+        s.lineText = refused ? tr("Cannot be played") : QString();
+        s.problems.append({refused ? Level::Error : Level::Info, asSentence(session.stateText())});
     } else if (isDown(session.state())) {
         s.downSinceMs = m_downSinceMs;
         s.lineText = FleetTile::downText(m_downSinceMs, m_clock());

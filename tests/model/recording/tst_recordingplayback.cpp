@@ -6,6 +6,7 @@
 #include "jointrecording.h"
 
 #include "model/recording/recordingplayback.h"
+#include "model/workspace/linetile.h"
 #include "model/workspace/workspace.h"
 
 #include <QJsonDocument>
@@ -192,6 +193,14 @@ void TestRecordingPlayback::aWorkspaceLinePlaysTheRecordingBesideIt() {
     connect(&session.joints(), &JointWatcher::jointEnded, this, [&joints] { ++joints; });
     QTRY_COMPARE_WITH_TIMEOUT(session.state(), Session::State::Disconnected, 30'000);
     QCOMPARE(joints, m_truth.made.size());
+    // On the fleet overview a played recording is no line down: it needs no attention, and
+    // says how it went.
+    const FleetTileState tile = LineTile(workspace, 0).state();
+    QCOMPARE(tile.deviceName, QStringLiteral("Recording"));
+    QVERIFY(!tile.needsAttention());
+    QVERIFY(!tile.problems.isEmpty());
+    QVERIFY2(tile.problems.first().text.contains(QStringLiteral("played")),
+             qPrintable(tile.problems.first().text));
 }
 
 QTEST_GUILESS_MAIN(TestRecordingPlayback)
