@@ -113,7 +113,6 @@ void RecordingPlayback::playSome() {
 void RecordingPlayback::end(Session::State state, const QString &text) {
     // Nothing after the last sample was recorded: a joint still in progress is incomplete.
     m_session.joints().unwatch(this);
-    m_done = true;
     m_session.setPlaybackState(state, text);
     Q_EMIT finished();
 }

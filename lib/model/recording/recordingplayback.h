@@ -36,9 +36,6 @@ public:
     // Starts playing session.settings().recordingPath into `session`.
     static RecordingPlayback *start(Session &session);
 
-    [[nodiscard]] bool isDone() const { return m_done; }
-    [[nodiscard]] qint64 samplesPlayed() const { return m_played; }
-
 Q_SIGNALS:
     void finished();
 
@@ -58,8 +55,7 @@ private:
     std::unique_ptr<ChartRecording> m_recording;
     std::vector<Port> m_ports;
     qint64 m_playedUntilMs = 0; // [first, m_playedUntilMs) of every port is played
-    qint64 m_played = 0;
-    bool m_done = false;
+    qint64 m_played = 0;        // samples, for the line's state once played
 };
 
 } // namespace tipscope::model
