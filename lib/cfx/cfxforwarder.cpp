@@ -1,9 +1,11 @@
 #include "cfxforwarder.h"
 
 #include "amqpsender.h"
+#include "cfxboard.h"
 #include "cfxmessages.h"
 
 #include "journal/journal.h"
+#include "model/workcontextjson.h"
 
 #include <QLoggingCategory>
 
@@ -18,15 +20,23 @@ constexpr int kMarkEveryMs = 200;
 constexpr int kLookBack = 50;
 
 using Severity = journal::JournalEvent::Severity;
+
+// The board serial a context change names; empty: none.
+QString boardNamedBy(const journal::StoredEvent &change) {
+    const auto to =
+        model::workContextFromJson(change.record.details.value(QStringLiteral("to")).toObject());
+    return to ? to->boardSerial : QString();
+}
 } // namespace
 
 CfxForwarder::CfxForwarder(journal::Journal &journal, AmqpSender &sender, HandleOf handleOf,
-                           Codec codec, QObject *parent)
+                           Codec codec, BoardStations boardStations, QObject *parent)
     : QObject(parent)
     , m_journal(journal)
     , m_sender(sender)
     , m_handleOf(std::move(handleOf))
-    , m_codec(codec) {
+    , m_codec(codec)
+    , m_boardStations(std::move(boardStations)) {
     m_pumpTimer.setSingleShot(true);
     m_pumpTimer.setInterval(20); // coalesces a burst of commits and acceptances
     connect(&m_pumpTimer, &QTimer::timeout, this, &CfxForwarder::pump);
@@ -66,22 +76,39 @@ void CfxForwarder::pump() {
         if (events->isEmpty())
             return;
         for (const journal::StoredEvent &event : *events) {
-            if (const std::optional<Envelope> envelope = envelopeOf(event)) {
-                const quint64 tag = m_sender.send(toAmqpMessage(*envelope, m_codec));
-                if (tag == 0) // the connection went meanwhile: it stays in the journal
+            const std::optional<QList<Envelope>> made = envelopesOf(event);
+            if (!made)
+                return; // the journal could not be read: the event waits, the problem is said
+            const QList<Envelope> &envelopes = *made;
+            if (envelopes.isEmpty())
+                markSoon(event.id);
+            QList<quint64> tags;
+            for (const Envelope &envelope : envelopes) {
+                const quint64 tag = m_sender.send(toAmqpMessage(envelope, m_codec));
+                if (tag == 0) { // the connection went meanwhile: it stays in the journal
+                    for (const quint64 sent : tags)
+                        m_inFlight.erase(sent);
                     return;
+                }
+                tags.append(tag);
                 m_inFlight.emplace(tag, event.id);
-            } else {
-                m_marks.append(event.id);
-                if (!m_markTimer.isActive())
-                    m_markTimer.start();
             }
+            if (!envelopes.isEmpty())
+                m_unaccepted.insert(event.id, int(envelopes.size()));
             m_cursor = event.id;
         }
     }
 }
 
-std::optional<Envelope> CfxForwarder::envelopeOf(const journal::StoredEvent &stored) {
+std::optional<QList<Envelope>> CfxForwarder::envelopesOf(const journal::StoredEvent &stored) {
+    if (stored.record.kind == journal::JournalEvent::Kind::ContextChange)
+        return boardEnvelopesOf(stored);
+    if (const std::optional<Envelope> envelope = faultEnvelopeOf(stored))
+        return QList<Envelope>{*envelope};
+    return QList<Envelope>();
+}
+
+std::optional<Envelope> CfxForwarder::faultEnvelopeOf(const journal::StoredEvent &stored) {
     const journal::JournalEvent &event = stored.record;
     if (!isFaultEvent(event))
         return std::nullopt;
@@ -98,6 +125,90 @@ std::optional<Envelope> CfxForwarder::envelopeOf(const journal::StoredEvent &sto
     }
     return cfx::envelopeOf(message, m_handleOf(event.device), stored.uid,
                            QDateTime::fromMSecsSinceEpoch(event.timeMs, Qt::UTC));
+}
+
+std::optional<QList<Envelope>> CfxForwarder::boardEnvelopesOf(const journal::StoredEvent &change) {
+    // The context changes before this one, newest first: the board they named last, and the
+    // change that began naming it (its transaction).
+    journal::EventFilter filter;
+    filter.kinds = {journal::JournalEvent::Kind::ContextChange};
+    filter.untilMs = change.record.timeMs + 1;
+    filter.limit = kLookBack;
+    filter.order = journal::Order::NewestFirst;
+    const auto earlier = m_reader.events(filter);
+    if (!earlier) {
+        setProblem(earlier.error());
+        return std::nullopt;
+    }
+    QString before;
+    std::optional<journal::StoredEvent> began;
+    for (const journal::StoredEvent &event : *earlier) {
+        if (event.id >= change.id)
+            continue;
+        const QString serial = boardNamedBy(event);
+        if (began && serial != before)
+            break;
+        before = serial;
+        began = event;
+    }
+    const QString next = boardNamedBy(change);
+    if (next == before)
+        return QList<Envelope>(); // the same board: another operator or work order, or a program
+                                  // started again
+
+    const QList<model::DeviceIdentity> stations =
+        m_boardStations ? m_boardStations() : QList<model::DeviceIdentity>();
+    QList<Envelope> envelopes;
+    const auto add = [&](const Message &message, const model::DeviceIdentity &station,
+                         qint64 timeMs) {
+        const QString handle = m_handleOf(station);
+        envelopes.append(cfx::envelopeOf(
+            message, handle,
+            QUuid::createUuidV5(change.uid, QStringLiteral("%1/%2").arg(message.name, handle)),
+            QDateTime::fromMSecsSinceEpoch(timeMs, Qt::UTC)));
+    };
+    if (!before.isEmpty()) {
+        BoardWork work;
+        work.serial = before;
+        work.transaction = began->uid;
+        work.workOrder = began->context.workOrder;
+        work.startedMs = began->record.timeMs;
+        work.finishedMs = change.record.timeMs;
+        journal::JointFilter filter;
+        filter.boardSerial = before;
+        filter.sinceMs = work.startedMs;
+        filter.untilMs = work.finishedMs + 1;
+        filter.order = journal::Order::OldestFirst;
+        const auto made = m_reader.joints(filter);
+        if (!made) {
+            setProblem(made.error());
+            return std::nullopt;
+        }
+        // Each station that was told of the board, and each that made joints on it.
+        QList<model::DeviceIdentity> workers = stations;
+        for (const journal::StoredJoint &joint : *made)
+            if (!workers.contains(joint.record.device))
+                workers.append(joint.record.device);
+        for (const model::DeviceIdentity &station : workers) {
+            BoardWork own = work;
+            for (const journal::StoredJoint &joint : *made)
+                if (joint.record.device == station)
+                    own.joints.append(joint);
+            if (!own.joints.isEmpty())
+                add(unitsProcessed(own), station, work.finishedMs);
+            add(workCompleted(own), station, work.finishedMs);
+        }
+    }
+    if (!next.isEmpty()) {
+        BoardWork work;
+        work.serial = next;
+        work.transaction = change.uid;
+        work.workOrder = change.context.workOrder;
+        work.startedMs = change.record.timeMs;
+        for (const model::DeviceIdentity &station : stations)
+            add(workStarted(work), station, work.startedMs);
+    }
+    return envelopes;
 }
 
 QUuid CfxForwarder::raisingOccurrence(const journal::StoredEvent &cleared) {
@@ -128,20 +239,30 @@ void CfxForwarder::onAccepted(quint64 tag) {
     const auto it = m_inFlight.find(tag);
     if (it == m_inFlight.end())
         return;
-    m_marks.append(it->second);
+    const qint64 row = it->second;
     m_inFlight.erase(it);
     ++m_accepted;
-    if (!m_markTimer.isActive())
-        m_markTimer.start();
+    if (const auto left = m_unaccepted.find(row); left != m_unaccepted.end() && --*left == 0) {
+        m_unaccepted.erase(left);
+        markSoon(row);
+    }
     pumpSoon();
 }
 
+void CfxForwarder::markSoon(qint64 row) {
+    m_marks.append(row);
+    if (!m_markTimer.isActive())
+        m_markTimer.start();
+}
+
 void CfxForwarder::onLost() {
-    // Everything from the oldest message not accepted is read again after the next connection.
+    // Everything from the oldest event not wholly accepted is read again after the next
+    // connection; its messages keep their UniqueIDs.
     qint64 oldest = m_cursor;
     for (const auto &[tag, row] : m_inFlight)
         oldest = qMin(oldest, row - 1);
     m_inFlight.clear();
+    m_unaccepted.clear();
     m_cursor = oldest;
     m_openFaults.clear(); // read again with the events
 }

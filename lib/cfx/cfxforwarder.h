@@ -12,6 +12,15 @@
 // are marked at once. At most kWindow messages wait for the broker; the rest wait in the journal.
 // A lost connection sends everything not yet accepted again after the next one.
 //
+// A change of the work context's board serial ends one board and begins the next (cfxboard.h):
+// the board that was named gets UnitsProcessed and WorkCompleted from each station that follows
+// the shared context or made joints on it, the new one WorkStarted from each that follows it.
+// What was named before is the journal's previous context change, not the event's own "from":
+// a program that starts again names its board again, and that continues the open work. The
+// transaction is the id of the change that began the board. One event may so become several
+// messages, each with a UniqueID made from the event's id, its message and its station; the
+// event is marked sent when the broker accepted all of them.
+//
 // The journal and the sender must outlive the forwarder, and live on its thread.
 #pragma once
 
@@ -38,10 +47,13 @@ class CfxForwarder : public QObject {
 public:
     // The CFX handle of the endpoint a device's records are sent as.
     using HandleOf = std::function<QString(const model::DeviceIdentity &device)>;
+    // The stations that work on the board the shared work context names (those on lines without
+    // a context of their own).
+    using BoardStations = std::function<QList<model::DeviceIdentity>()>;
     static constexpr int kWindow = 200;
 
     CfxForwarder(journal::Journal &journal, AmqpSender &sender, HandleOf handleOf, Codec codec,
-                 QObject *parent = nullptr);
+                 BoardStations boardStations = {}, QObject *parent = nullptr);
 
     [[nodiscard]] qint64 acceptedCount() const { return m_accepted; }
     [[nodiscard]] int waitingCount() const { return int(m_inFlight.size()); }
@@ -56,9 +68,14 @@ Q_SIGNALS:
 private:
     void pumpSoon();
     void pump();
-    // The message an event becomes, or none (marked at once).
-    [[nodiscard]] std::optional<Envelope> envelopeOf(const journal::StoredEvent &event);
+    // The messages an event becomes (none: it is marked at once), or nothing when the journal
+    // could not be read to make them.
+    [[nodiscard]] std::optional<QList<Envelope>> envelopesOf(const journal::StoredEvent &event);
+    [[nodiscard]] std::optional<Envelope> faultEnvelopeOf(const journal::StoredEvent &event);
+    [[nodiscard]] std::optional<QList<Envelope>>
+    boardEnvelopesOf(const journal::StoredEvent &change);
     [[nodiscard]] QUuid raisingOccurrence(const journal::StoredEvent &cleared);
+    void markSoon(qint64 row);
     void onAccepted(quint64 tag);
     void onLost();
     void flushMarks();
@@ -68,9 +85,11 @@ private:
     AmqpSender &m_sender;
     HandleOf m_handleOf;
     Codec m_codec;
+    BoardStations m_boardStations;
     journal::JournalReader m_reader;
     qint64 m_cursor = 0;
     std::map<quint64, qint64> m_inFlight; // tag → event row
+    QHash<qint64, int> m_unaccepted;      // event row → its messages the broker has not accepted
     QHash<QString, QUuid> m_openFaults;   // faultPlace() → occurrence
     QList<qint64> m_marks;
     QTimer m_pumpTimer;

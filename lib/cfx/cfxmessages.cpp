@@ -116,10 +116,10 @@ Message stationStateChanged(StationCondition before, std::optional<qint64> oldDu
                             StationCondition after, const QJsonObject &relatedFault) {
     return {
         QStringLiteral("CFX.ResourcePerformance.StationStateChanged"),
-        {{QStringLiteral("OldState"), int(e10StateOf(before))},
+        {{QStringLiteral("OldState"), QString::number(int(e10StateOf(before)))},
          {QStringLiteral("OldStateDuration"),
           oldDurationMs ? QJsonValue(cfxTimeSpan(*oldDurationMs)) : QJsonValue(QJsonValue::Null)},
-         {QStringLiteral("NewState"), int(e10StateOf(after))},
+         {QStringLiteral("NewState"), QString::number(int(e10StateOf(after)))},
          {QStringLiteral("RelatedFault"),
           relatedFault.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(relatedFault)}}};
 }

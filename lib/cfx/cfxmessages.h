@@ -3,7 +3,8 @@
 // the message's name and body; the envelope (cfxenvelope.h) adds who sends it, when and its id.
 //
 // A station's condition (what its ports and its link report) is mapped to a SEMI E10 state, the
-// numbers the SDK writes for ResourceState; the table is kE10Mapping, documented in docs/cfx.md.
+// codes the SDK writes for ResourceState (as text: "2200"); the table is kE10Mapping, documented
+// in docs/cfx.md.
 // Faults come from the journal's station, port and feeder error events: the event that raises a
 // fault gives its FaultOccurrenceId (the event's own id), so a FaultCleared made from a later
 // "error cleared" event names the same occurrence.

@@ -5,11 +5,13 @@
 namespace tipscope::cfx {
 
 CfxPublisher::CfxPublisher(journal::Journal &journal, const CfxSettings &settings,
-                           CfxForwarder::HandleOf handleOf, Handles handles, QObject *parent)
+                           CfxForwarder::HandleOf handleOf, Handles handles,
+                           CfxForwarder::BoardStations boardStations, QObject *parent)
     : QObject(parent)
     , m_settings(settings)
     , m_handles(std::move(handles))
-    , m_forwarder(journal, m_sender, std::move(handleOf), settings.codec) {
+    , m_forwarder(journal, m_sender, std::move(handleOf), settings.codec,
+                  std::move(boardStations)) {
     m_heartbeat.setInterval(settings.heartbeatS * 1000);
     connect(&m_heartbeat, &QTimer::timeout, this, [this] {
         const qint64 periodMs = m_settings.heartbeatS * 1000LL;

@@ -6,9 +6,10 @@
 // heartbeatS, and EndpointShuttingDown on stop().
 //
 // The stations are named by handles() (asked anew each time, so stations found later are
-// included) and the journal's records by handleOf(); both come from the front end, which knows
-// the workspace. stop() sends the goodbyes, waits for the broker to accept them (at most
-// `timeoutMs`) and emits stopped(). The journal must outlive the publisher.
+// included) and the journal's records by handleOf(); boardStations() says which stations work on
+// the board the shared work context names (the forwarder's per-board messages). All three come
+// from the front end, which knows the workspace. stop() sends the goodbyes, waits for the broker to
+// accept them (at most `timeoutMs`) and emits stopped(). The journal must outlive the publisher.
 #pragma once
 
 #include "amqpsender.h"
@@ -29,7 +30,8 @@ public:
     using Handles = std::function<QStringList()>;
 
     CfxPublisher(journal::Journal &journal, const CfxSettings &settings,
-                 CfxForwarder::HandleOf handleOf, Handles handles, QObject *parent = nullptr);
+                 CfxForwarder::HandleOf handleOf, Handles handles,
+                 CfxForwarder::BoardStations boardStations = {}, QObject *parent = nullptr);
 
     void start();
     void stop(int timeoutMs = 3000);

@@ -13,8 +13,6 @@ namespace tipscope::journal {
 using protocol::failure;
 using protocol::Outcome;
 
-namespace {
-
 BoardResult boardResultOf(const QMap<model::JointVerdict, int> &verdicts) {
     if (verdicts.isEmpty())
         return BoardResult::NoJoints;
@@ -25,6 +23,8 @@ BoardResult boardResultOf(const QMap<model::JointVerdict, int> &verdicts) {
         return BoardResult::NotJudged;
     return BoardResult::Pass;
 }
+
+namespace {
 
 void addOnce(QStringList &list, const QString &text) {
     if (!text.isEmpty() && !list.contains(text))

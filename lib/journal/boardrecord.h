@@ -34,6 +34,8 @@ class JournalReader;
 // any could not be judged, else Pass; NoJoints for a board with events only.
 enum class BoardResult { Pass, Fail, NotJudged, NoJoints };
 [[nodiscard]] QString boardResultName(BoardResult result); // "pass", "fail", ... (files)
+// The rule above, for joints counted by verdict.
+[[nodiscard]] BoardResult boardResultOf(const QMap<model::JointVerdict, int> &verdicts);
 
 struct BoardTip {
     model::DeviceIdentity device;

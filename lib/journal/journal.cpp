@@ -3,6 +3,8 @@
 #include "journalshared.h"
 #include "journalwriter.h"
 
+#include "model/workcontextjson.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDeadlineTimer>
@@ -12,12 +14,6 @@
 namespace tipscope::journal {
 
 namespace {
-
-QJsonObject contextJson(const model::WorkContext &context) {
-    return {{QStringLiteral("work_order"), context.workOrder},
-            {QStringLiteral("board_serial"), context.boardSerial},
-            {QStringLiteral("operator"), context.operatorName}};
-}
 
 // Queues a request for the writer; false once the journal is closed.
 bool post(JournalShared &shared, JournalWriter *writer, Request request) {
@@ -148,8 +144,8 @@ void Journal::setContext(const model::WorkContext &context) {
     event.kind = JournalEvent::Kind::ContextChange;
     event.text = tr("Work order: %1, board: %2, operator: %3")
                      .arg(context.workOrder, context.boardSerial, context.operatorName);
-    event.details = {{QStringLiteral("from"), contextJson(before)},
-                     {QStringLiteral("to"), contextJson(context)}};
+    event.details = {{QStringLiteral("from"), model::workContextToJson(before)},
+                     {QStringLiteral("to"), model::workContextToJson(context)}};
     append(std::move(event));
 }
 

@@ -4,6 +4,7 @@
 #ifdef TIPSCOPE_WITH_CFX
 #include "cfx/cfxmessages.h"
 #include "cfx/cfxpublisher.h"
+#include "model/stationmodel.h"
 #endif
 
 #include <QLoggingCategory>
@@ -94,7 +95,7 @@ void PlantAgent::startCfx() {
     m_cfx = std::make_unique<cfx::CfxPublisher>(
         m_lines.journal(), *m_config.cfx,
         [this](const model::DeviceIdentity &device) { return cfxHandleOf(device); },
-        [this] { return cfxHandles(); });
+        [this] { return cfxHandles(); }, [this] { return boardStations(); });
     connect(m_cfx.get(), &cfx::CfxPublisher::stopped, this, [this] {
         m_cfx.release()->deleteLater(); // its own signal is still being emitted
         finishIfStopped();
@@ -134,6 +135,19 @@ QString PlantAgent::cfxHandleOf(const model::DeviceIdentity &device) {
     const QString line = index >= 0 ? workspace.line(index).name : device.line;
     return cfx::endpointHandle(m_config.cfx->vendor, device.model,
                                QStringLiteral("%1-%2").arg(line).arg(device.address.value_or(0)));
+}
+
+QList<model::DeviceIdentity> PlantAgent::boardStations() {
+    // The soldering stations of the lines without a work context of their own; a feeder makes
+    // no joints.
+    QList<model::DeviceIdentity> stations;
+    model::Workspace &workspace = m_lines.workspace();
+    for (int i = 0; i < workspace.count(); ++i)
+        if (!workspace.line(i).ownContext())
+            for (const model::DeviceModel *device : workspace.session(i)->devices())
+                if (qobject_cast<const model::StationModel *>(device))
+                    stations.append(device->identity());
+    return stations;
 }
 
 QStringList PlantAgent::cfxHandles() {

@@ -72,6 +72,7 @@ private:
     // (TipScope does not read a station's serial number today).
     [[nodiscard]] QString cfxHandleOf(const model::DeviceIdentity &device);
     [[nodiscard]] QStringList cfxHandles();
+    [[nodiscard]] QList<model::DeviceIdentity> boardStations();
     void finishIfStopped();
 
     Publisher m_who;

@@ -18,6 +18,87 @@ ENVELOPE = ["MessageName", "Version", "TimeStamp", "UniqueID", "Source", "Target
             "RequestID", "MessageBody"]
 
 
+def is_uuid(text):
+    try:
+        uuid.UUID(str(text))
+        return True
+    except ValueError:
+        return False
+
+
+def first_key_is_type(obj, type_name):
+    """Newtonsoft reads a polymorphic object only when "$type" comes first."""
+    return isinstance(obj, dict) and next(iter(obj), None) == "$type" and \
+        obj["$type"] == type_name
+
+
+def check_numeric_values(items, where, bad):
+    for item in items or []:
+        value = item.get("Value", {})
+        if not isinstance(item.get("Name"), str) or \
+                not isinstance(value.get("Value"), (int, float)) or \
+                not isinstance(value.get("ValueUnits"), str):
+            bad.append("%s value %r" % (where, item))
+
+
+def check_body(name, body):
+    """The fields of the messages the SDK declares, by its names (docs/cfx.md)."""
+    bad = []
+    if next(iter(body), None) != "$type":
+        bad.append("$type is not the body's first field")
+    if name == "CFX.Production.WorkStarted":
+        if not is_uuid(body.get("TransactionID")) or not isinstance(body.get("PrimaryIdentifier"), str):
+            bad.append("WorkStarted ids %r" % body)
+        if body.get("UnitCount") != len(body.get("Units") or []):
+            bad.append("WorkStarted UnitCount")
+        if body.get("RelevantSurface") not in ("Unspecified", "PrimarySurface", "SecondarySurface"):
+            bad.append("WorkStarted RelevantSurface")
+    elif name == "CFX.Production.WorkCompleted":
+        if not is_uuid(body.get("TransactionID")):
+            bad.append("WorkCompleted TransactionID")
+        if body.get("Result") not in ("Completed", "Failed", "Aborted", "Skipped"):
+            bad.append("WorkCompleted Result %r" % body.get("Result"))
+    elif name == "CFX.Production.Processing.UnitsProcessed":
+        results = ("Succeeded", "Failed", "Error", "Aborted", "Skipped")
+        if not is_uuid(body.get("TransactionId")) or "TransactionID" in body:
+            bad.append("UnitsProcessed TransactionId")
+        if body.get("OverallResult") not in results:
+            bad.append("UnitsProcessed OverallResult")
+        common = body.get("CommonProcessData")
+        if not first_key_is_type(
+                common, "CFX.Structures.HandSoldering.HandSolderingBoardProcessData, CFX"):
+            bad.append("CommonProcessData $type")
+        else:
+            if not is_uuid(common.get("BoardId")):
+                bad.append("BoardId")
+            for point in common.get("SolderPoints") or []:
+                for key in ("Name", "StartedAt", "FinishedAt"):
+                    if not isinstance(point.get(key), str):
+                        bad.append("SolderPoint " + key)
+                for material in point.get("Materials") or []:
+                    if not isinstance(material.get("Type"), int):  # MaterialType: a number
+                        bad.append("Material Type %r" % material.get("Type"))
+        for unit in body.get("UnitProcessData") or []:
+            if unit.get("UnitResult") not in results:
+                bad.append("UnitResult")
+            data = unit.get("UnitProcessData")
+            if data is None:
+                continue
+            if not first_key_is_type(data, "CFX.Structures.Generic.GenericProcessData, CFX"):
+                bad.append("UnitProcessData $type")
+                continue
+            check_numeric_values(data.get("Setpoints"), "Setpoints", bad)
+            check_numeric_values(data.get("Readings"), "Readings", bad)
+            for stage in data.get("StageData") or []:
+                check_numeric_values(stage.get("Setpoints"), "stage Setpoints", bad)
+                check_numeric_values(stage.get("Readings"), "stage Readings", bad)
+    elif name == "CFX.ResourcePerformance.StationStateChanged":
+        for key in ("OldState", "NewState"):  # ResourceState: its code as text
+            if not isinstance(body.get(key), str) or not body[key].isdigit():
+                bad.append("%s %r" % (key, body.get(key)))
+    return bad
+
+
 def check(message, envelope):
     """What in one message does not fit CFX, as a list of sentences."""
     bad = []
@@ -30,6 +111,7 @@ def check(message, envelope):
         bad.append("Version " + str(envelope["Version"]))
     if body.get("$type") != name + ", CFX":
         bad.append("$type " + str(body.get("$type")))
+    bad += check_body(name, body)
     try:
         uuid.UUID(envelope["UniqueID"])
     except ValueError:

@@ -75,8 +75,8 @@ private Q_SLOTS:
                      .value(QStringLiteral("MessageBody"))
                      .toObject()
                      .value(QStringLiteral("NewState"))
-                     .toInt(),
-                 1100);
+                     .toString(),
+                 QStringLiteral("1100"));
     }
 
     void problemsSayWhatToFix_data() {

@@ -1,7 +1,8 @@
 // The journal's station, port and feeder errors forwarded as CFX faults to a real RabbitMQ and
 // read by the independent Python consumer: in the journal's order, each message's UniqueID its
 // event's id, a clearing tied to its error, every event marked sent only once accepted, and
-// nothing lost or sent under two ids across a broker outage.
+// nothing lost or sent under two ids across a broker outage; and the work context's boards as
+// per-board transactions.
 #include "cfx/amqpsender.h"
 #include "cfx/cfxforwarder.h"
 #include "cfx/cfxmessages.h"
@@ -9,6 +10,7 @@
 #include "journalfixture.h"
 
 #include "journal/journalreader.h"
+#include "model/workcontextjson.h"
 
 #include <QSet>
 #include <QSignalSpy>
@@ -40,8 +42,11 @@ class TstCfxForwarder : public QObject {
     }
 
     static QString handleOf(const model::DeviceIdentity &device) {
+        // Each sample device is on a line of its own, at the same address.
         return endpointHandle(QStringLiteral("JBC"), device.model,
-                              QString::number(device.address.value_or(0)));
+                              QStringLiteral("%1-%2")
+                                  .arg(device.line.section(QLatin1Char('/'), -1))
+                                  .arg(device.address.value_or(0)));
     }
 
     static qint64 unsentCount(const QString &path) {
@@ -50,6 +55,17 @@ class TstCfxForwarder : public QObject {
             return -1;
         const auto events = reader.unsentEvents(0, 1000, journal::SentChannel::Cfx);
         return events ? events->size() : -1;
+    }
+
+    static JournalEvent contextChange(const model::WorkContext &from, const model::WorkContext &to,
+                                      qint64 timeMs) {
+        JournalEvent event;
+        event.kind = JournalEvent::Kind::ContextChange;
+        event.timeMs = timeMs;
+        event.text = to.boardSerial;
+        event.details = {{QStringLiteral("from"), model::workContextToJson(from)},
+                         {QStringLiteral("to"), model::workContextToJson(to)}};
+        return event;
     }
 
     static QJsonObject envelopeAt(const CfxConsumer &consumer, int i) {
@@ -152,6 +168,99 @@ private Q_SLOTS:
         }
         QCOMPARE(received.size(), 60); // no UniqueID twice: each message arrived once
         QCOMPARE(received, journaled);
+    }
+
+    // A board is a transaction at each station: WorkStarted when the shared context names it,
+    // UnitsProcessed (from a station that made joints) and WorkCompleted when it names another.
+    // A change of operator, or a program naming the same board again after a restart, continues
+    // the work. Sent again after a crash, each message keeps its UniqueID.
+    void boardsAreTransactionsAtEachStation() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+        journal::Journal journal(path, testing::quickOptions());
+        QVERIFY(testing::waitOpened(journal));
+        const model::DeviceIdentity soldering = testing::sampleDevice(0);
+        const model::DeviceIdentity idle = testing::sampleDevice(1);
+        const auto stations = [&] { return QList<model::DeviceIdentity>{soldering, idle}; };
+        const model::WorkContext none;
+        const model::WorkContext first{QStringLiteral("WO-7"), QStringLiteral("SN-1"),
+                                       QStringLiteral("ana")};
+        model::WorkContext firstAgain = first;
+        firstAgain.operatorName = QStringLiteral("ben");
+        const model::WorkContext second{QStringLiteral("WO-7"), QStringLiteral("SN-2"),
+                                        QStringLiteral("ben")};
+        const QUuid began = journal.append(contextChange(none, first, testing::kT0), first);
+        for (int i : {0, 1, 4}) // ok, slow recovery, one that never recovered
+            journal.append(testing::sampleJoint(i, testing::kT0 + 1000 * (i + 1)), first);
+        journal.append(contextChange(first, firstAgain, testing::kT0 + 7000), firstAgain);
+        journal.append(contextChange(none, firstAgain, testing::kT0 + 8000), firstAgain);
+        const QUuid next =
+            journal.append(contextChange(firstAgain, second, testing::kT0 + 10000), second);
+        journal.append(contextChange(second, none, testing::kT0 + 20000), none);
+
+        constexpr int kMessages = 2 + 3 + 2 + 2;
+        QStringList ids;
+        for (int run = 0; run < 2; ++run) {
+            CfxConsumer consumer;
+            QVERIFY2(
+                consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), kMessages),
+                qPrintable(consumer.output()));
+            AmqpSender sender;
+            CfxForwarder forwarder(journal, sender, handleOf, Codec::Gzip, stations);
+            sender.start(
+                testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic")));
+            QVERIFY2(consumer.finish(), qPrintable(consumer.output()));
+            QVERIFY2(consumer.complaints().isEmpty(), qPrintable(consumer.complaints().join('\n')));
+            QStringList names, sources, runIds;
+            for (int i = 0; i < consumer.messages().size(); ++i) {
+                const QJsonObject envelope = envelopeAt(consumer, i);
+                names << envelope.value(QStringLiteral("MessageName")).toString().section('.', -1);
+                sources << envelope.value(QStringLiteral("Source")).toString();
+                runIds << envelope.value(QStringLiteral("UniqueID")).toString();
+            }
+            const QString a = handleOf(soldering), b = handleOf(idle);
+            QCOMPARE(names, (QStringList{"WorkStarted", "WorkStarted", "UnitsProcessed",
+                                         "WorkCompleted", "WorkCompleted", "WorkStarted",
+                                         "WorkStarted", "WorkCompleted", "WorkCompleted"}));
+            QCOMPARE(sources, (QStringList{a, b, a, a, b, a, b, a, b}));
+            QTRY_COMPARE_WITH_TIMEOUT(unsentCount(path), qint64(0), 20000);
+
+            // SN-1: one transaction, the id of the change that began it, at both stations.
+            const QString transaction = began.toString(QUuid::WithoutBraces);
+            for (int i : {0, 1, 3, 4})
+                QCOMPARE(bodyField(envelopeAt(consumer, i), QStringLiteral("TransactionID")),
+                         transaction);
+            const QJsonObject processed =
+                envelopeAt(consumer, 2).value(QStringLiteral("MessageBody")).toObject();
+            QCOMPARE(processed.value(QStringLiteral("TransactionId")).toString(), transaction);
+            QCOMPARE(processed.value(QStringLiteral("OverallResult")).toString(),
+                     QStringLiteral("Failed"));
+            QCOMPARE(processed.value(QStringLiteral("CommonProcessData"))
+                         .toObject()
+                         .value(QStringLiteral("SolderPoints"))
+                         .toArray()
+                         .size(),
+                     3);
+            QCOMPARE(bodyField(envelopeAt(consumer, 3), QStringLiteral("Result")),
+                     QStringLiteral("Completed"));
+            QCOMPARE(bodyField(envelopeAt(consumer, 4), QStringLiteral("Result")),
+                     QStringLiteral("Skipped"));
+            QCOMPARE(bodyField(envelopeAt(consumer, 5), QStringLiteral("PrimaryIdentifier")),
+                     QStringLiteral("SN-2"));
+            QCOMPARE(bodyField(envelopeAt(consumer, 7), QStringLiteral("TransactionID")),
+                     next.toString(QUuid::WithoutBraces));
+            QCOMPARE(QSet<QString>(runIds.begin(), runIds.end()).size(), kMessages);
+            if (run == 0) {
+                ids = runIds;
+                // As after a crash between the broker's acceptance and the mark: sent again.
+                testing::RawDatabase db(path);
+                QString error;
+                QVERIFY2(db.execAll(QStringLiteral("UPDATE events SET cfx_sent = 0"), &error),
+                         qPrintable(error));
+            } else {
+                QCOMPARE(runIds, ids);
+            }
+        }
     }
 };
 

@@ -45,8 +45,8 @@ private Q_SLOTS:
         const Message message =
             stationStateChanged(StationCondition::InStand, 85000, StationCondition::Working, {});
         QCOMPARE(message.name, QStringLiteral("CFX.ResourcePerformance.StationStateChanged"));
-        QCOMPARE(message.body.value(QStringLiteral("OldState")).toInt(), 2200);
-        QCOMPARE(message.body.value(QStringLiteral("NewState")).toInt(), 1100);
+        QCOMPARE(message.body.value(QStringLiteral("OldState")).toString(), QStringLiteral("2200"));
+        QCOMPARE(message.body.value(QStringLiteral("NewState")).toString(), QStringLiteral("1100"));
         QCOMPARE(message.body.value(QStringLiteral("OldStateDuration")).toString(),
                  QStringLiteral("00:01:25"));
         QVERIFY(message.body.value(QStringLiteral("RelatedFault")).isNull());
