@@ -368,176 +368,191 @@
         <translation>%1 ± %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="134"/>
-        <location filename="../lib/report/boardpdf.cpp" line="307"/>
+        <location filename="../lib/report/boardpdf.cpp" line="127"/>
+        <source>≤ %1 K, ≤ %2 s</source>
+        <translation>≤ %1 K, ≤ %2 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="166"/>
+        <location filename="../lib/report/boardpdf.cpp" line="357"/>
         <source>Board record: %1</source>
         <translation>Platinenbericht: %1</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="144"/>
+        <location filename="../lib/report/boardpdf.cpp" line="176"/>
         <source>Made: %1 to %2</source>
         <translation>Gefertigt: %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="147"/>
+        <location filename="../lib/report/boardpdf.cpp" line="179"/>
         <source>Work order: %1</source>
         <translation>Auftrag: %1</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="150"/>
+        <location filename="../lib/report/boardpdf.cpp" line="182"/>
         <source>Operator: %1</source>
         <translation>Bediener: %1</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="153"/>
+        <location filename="../lib/report/boardpdf.cpp" line="185"/>
         <source>Joints: %1 (%2)</source>
         <translation>Lötstellen: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="166"/>
-        <location filename="../lib/report/boardpdf.cpp" line="223"/>
-        <location filename="../lib/report/boardpdf.cpp" line="250"/>
+        <location filename="../lib/report/boardpdf.cpp" line="200"/>
+        <location filename="../lib/report/boardpdf.cpp" line="268"/>
+        <location filename="../lib/report/boardpdf.cpp" line="295"/>
         <source>Station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="169"/>
+        <location filename="../lib/report/boardpdf.cpp" line="203"/>
         <source>Operator</source>
         <translation>Bediener</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="175"/>
-        <location filename="../lib/report/boardpdf.cpp" line="224"/>
+        <location filename="../lib/report/boardpdf.cpp" line="209"/>
+        <source>Limits (dip, recovery)</source>
+        <translation>Grenzen (Einbruch, Erholung)</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="211"/>
+        <location filename="../lib/report/boardpdf.cpp" line="269"/>
         <source>Joints</source>
         <translation>Lötstellen</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="186"/>
+        <location filename="../lib/report/boardpdf.cpp" line="214"/>
+        <source>Judged by: a dip of at most %1 K, back within %2 K of the setpoint in at most %3 s.</source>
+        <translation>Beurteilt nach: ein Einbruch von höchstens %1 K, zurück auf %2 K am Sollwert in höchstens %3 s.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="231"/>
         <source>#%1 %2, port %3: dip %4, recovery %5, %6</source>
         <translation>#%1 %2, Port %3: Einbruch %4, Erholung %5, %6</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="193"/>
+        <location filename="../lib/report/boardpdf.cpp" line="238"/>
         <source>Worst joints</source>
         <translation>Schlechteste Lötstellen</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="194"/>
+        <location filename="../lib/report/boardpdf.cpp" line="239"/>
         <source>No curves: the journal keeps each joint&apos;s figures, not the tip&apos;s readings during it.</source>
         <translation>Keine Kurven: das Journal behält die Kennwerte jeder Lötstelle, nicht die Messwerte der Spitze währenddessen.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="201"/>
+        <location filename="../lib/report/boardpdf.cpp" line="246"/>
         <source>not yet known: %1 joints of this tip; its first %2 recovered ones are the baseline</source>
         <translation>noch nicht bekannt: %1 Lötstellen dieser Spitze; ihre ersten %2 erholten bilden die Grundlinie</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="206"/>
+        <location filename="../lib/report/boardpdf.cpp" line="251"/>
         <source>%1 s when plugged in; no joint since</source>
         <translation>%1 s beim Einstecken; seitdem keine Lötstelle</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="207"/>
+        <location filename="../lib/report/boardpdf.cpp" line="252"/>
         <source>recovers in %1 s now, %2 s when plugged in (%3)</source>
         <translation>erholt sich jetzt in %1 s, beim Einstecken in %2 s (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="223"/>
+        <location filename="../lib/report/boardpdf.cpp" line="268"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="224"/>
+        <location filename="../lib/report/boardpdf.cpp" line="269"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="225"/>
+        <location filename="../lib/report/boardpdf.cpp" line="270"/>
         <source>Setpoints</source>
         <translation>Sollwerte</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="225"/>
+        <location filename="../lib/report/boardpdf.cpp" line="270"/>
         <source>Plugged in</source>
         <translation>Eingesteckt</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="226"/>
+        <location filename="../lib/report/boardpdf.cpp" line="271"/>
         <source>Tip wear</source>
         <translation>Spitzenverschleiß</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="227"/>
+        <location filename="../lib/report/boardpdf.cpp" line="272"/>
         <source>Tools and settings</source>
         <translation>Werkzeuge und Einstellungen</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="237"/>
+        <location filename="../lib/report/boardpdf.cpp" line="282"/>
         <source>, port %1</source>
         <translation>, Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="250"/>
+        <location filename="../lib/report/boardpdf.cpp" line="295"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="251"/>
+        <location filename="../lib/report/boardpdf.cpp" line="296"/>
         <source>What happened</source>
         <translation>Was geschah</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="253"/>
+        <location filename="../lib/report/boardpdf.cpp" line="298"/>
         <source>None in the journal.</source>
         <translation>Keine im Journal.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="258"/>
+        <location filename="../lib/report/boardpdf.cpp" line="303"/>
         <source>Profile applied before</source>
         <translation>Zuvor angewendetes Profil</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="259"/>
+        <location filename="../lib/report/boardpdf.cpp" line="304"/>
         <source>Faults and events while it was made</source>
         <translation>Fehler und Ereignisse während der Fertigung</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="264"/>
-        <source>The limits each joint was judged by: the journal does not keep them; a failed joint&apos;s warning among the events names the limit it broke.</source>
-        <translation>Die Grenzen, nach denen jede Lötstelle beurteilt wurde: das Journal behält sie nicht; die Warnung einer durchgefallenen Lötstelle unter den Ereignissen nennt die verletzte Grenze.</translation>
+        <location filename="../lib/report/boardpdf.cpp" line="310"/>
+        <source>The limits %1 of the %2 joints were judged by: they were journaled before the journal kept them; a failed joint&apos;s warning among the events names the limit it broke.</source>
+        <translation>Die Grenzen, nach denen %1 der %2 Lötstellen beurteilt wurden: sie wurden aufgezeichnet, bevor das Journal Grenzen behielt; die Warnung einer durchgefallenen Lötstelle unter den Ereignissen nennt die verletzte Grenze.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="266"/>
+        <location filename="../lib/report/boardpdf.cpp" line="316"/>
         <source>The station&apos;s settings as they stood: the journal keeps only changes made through TipScope (writes and profiles), not those made at the station.</source>
         <translation>Die Einstellungen der Station, wie sie waren: das Journal behält nur Änderungen über TipScope (Schreibvorgänge und Profile), nicht die an der Station selbst.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="269"/>
+        <location filename="../lib/report/boardpdf.cpp" line="319"/>
         <source>Curves of the joints: the journal keeps each joint&apos;s figures, not the tip&apos;s readings.</source>
         <translation>Kurven der Lötstellen: das Journal behält die Kennwerte jeder Lötstelle, nicht die Messwerte der Spitze.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="272"/>
+        <location filename="../lib/report/boardpdf.cpp" line="322"/>
         <source>Not in the journal</source>
         <translation>Nicht im Journal</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="277"/>
+        <location filename="../lib/report/boardpdf.cpp" line="327"/>
         <source>Written by TipScope %1 on %2 from the journal %3</source>
         <translation>Erstellt von TipScope %1 am %2 aus dem Journal %3</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="279"/>
+        <location filename="../lib/report/boardpdf.cpp" line="329"/>
         <source>Times are local; figures as measured from the station&apos;s readings, each with how sure it is.</source>
         <translation>Zeiten in Ortszeit; Kennwerte wie aus den Messwerten der Station gemessen, jeweils mit ihrer Unsicherheit.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="281"/>
+        <location filename="../lib/report/boardpdf.cpp" line="331"/>
         <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
         <translation>Geprüft von: ______________________   Datum: ____________   Unterschrift: ______________________</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="298"/>
+        <location filename="../lib/report/boardpdf.cpp" line="348"/>
         <source>cannot write %1: a PDF needs fonts, which need a graphical application (QGuiApplication)</source>
         <translation>kann %1 nicht schreiben: ein PDF braucht Schriften, und die brauchen eine grafische Anwendung (QGuiApplication)</translation>
     </message>
@@ -3528,17 +3543,17 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
         </translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="108"/>
+        <location filename="../lib/journal/journalschema.cpp" line="117"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="123"/>
+        <location filename="../lib/journal/journalschema.cpp" line="132"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="232"/>
+        <location filename="../lib/journal/journalschema.cpp" line="241"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
@@ -8702,19 +8717,19 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="97"/>
-        <location filename="../lib/journal/journal.cpp" line="111"/>
-        <location filename="../lib/journal/journal.cpp" line="170"/>
+        <location filename="../lib/journal/journal.cpp" line="93"/>
+        <location filename="../lib/journal/journal.cpp" line="107"/>
+        <location filename="../lib/journal/journal.cpp" line="166"/>
         <source>The journal is closed.</source>
         <translation>Das Journal ist geschlossen.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="101"/>
+        <location filename="../lib/journal/journal.cpp" line="97"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>Das Journal kommt nicht nach: %1 Einträge warten darauf, geschrieben zu werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="149"/>
+        <location filename="../lib/journal/journal.cpp" line="145"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
     </message>

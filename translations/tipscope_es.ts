@@ -368,176 +368,191 @@
         <translation>%1 ± %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="134"/>
-        <location filename="../lib/report/boardpdf.cpp" line="307"/>
+        <location filename="../lib/report/boardpdf.cpp" line="127"/>
+        <source>≤ %1 K, ≤ %2 s</source>
+        <translation>≤ %1 K, ≤ %2 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="166"/>
+        <location filename="../lib/report/boardpdf.cpp" line="357"/>
         <source>Board record: %1</source>
         <translation>Registro de la placa: %1</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="144"/>
+        <location filename="../lib/report/boardpdf.cpp" line="176"/>
         <source>Made: %1 to %2</source>
         <translation>Fabricada: %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="147"/>
+        <location filename="../lib/report/boardpdf.cpp" line="179"/>
         <source>Work order: %1</source>
         <translation>Orden de trabajo: %1</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="150"/>
+        <location filename="../lib/report/boardpdf.cpp" line="182"/>
         <source>Operator: %1</source>
         <translation>Operario: %1</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="153"/>
+        <location filename="../lib/report/boardpdf.cpp" line="185"/>
         <source>Joints: %1 (%2)</source>
         <translation>Soldaduras: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="166"/>
-        <location filename="../lib/report/boardpdf.cpp" line="223"/>
-        <location filename="../lib/report/boardpdf.cpp" line="250"/>
+        <location filename="../lib/report/boardpdf.cpp" line="200"/>
+        <location filename="../lib/report/boardpdf.cpp" line="268"/>
+        <location filename="../lib/report/boardpdf.cpp" line="295"/>
         <source>Station</source>
         <translation>Estación</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="169"/>
+        <location filename="../lib/report/boardpdf.cpp" line="203"/>
         <source>Operator</source>
         <translation>Operario</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="175"/>
-        <location filename="../lib/report/boardpdf.cpp" line="224"/>
+        <location filename="../lib/report/boardpdf.cpp" line="209"/>
+        <source>Limits (dip, recovery)</source>
+        <translation>Límites (caída, recuperación)</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="211"/>
+        <location filename="../lib/report/boardpdf.cpp" line="269"/>
         <source>Joints</source>
         <translation>Soldaduras</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="186"/>
+        <location filename="../lib/report/boardpdf.cpp" line="214"/>
+        <source>Judged by: a dip of at most %1 K, back within %2 K of the setpoint in at most %3 s.</source>
+        <translation>Juzgadas con: una caída de %1 K como máximo, de vuelta a %2 K de la consigna en %3 s como máximo.</translation>
+    </message>
+    <message>
+        <location filename="../lib/report/boardpdf.cpp" line="231"/>
         <source>#%1 %2, port %3: dip %4, recovery %5, %6</source>
         <translation>#%1 %2, puerto %3: caída %4, recuperación %5, %6</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="193"/>
+        <location filename="../lib/report/boardpdf.cpp" line="238"/>
         <source>Worst joints</source>
         <translation>Peores soldaduras</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="194"/>
+        <location filename="../lib/report/boardpdf.cpp" line="239"/>
         <source>No curves: the journal keeps each joint&apos;s figures, not the tip&apos;s readings during it.</source>
         <translation>Sin curvas: el diario guarda las cifras de cada soldadura, no las lecturas de la punta durante ella.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="201"/>
+        <location filename="../lib/report/boardpdf.cpp" line="246"/>
         <source>not yet known: %1 joints of this tip; its first %2 recovered ones are the baseline</source>
         <translation>aún no se sabe: %1 soldaduras de esta punta; sus primeras %2 recuperadas son la referencia</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="206"/>
+        <location filename="../lib/report/boardpdf.cpp" line="251"/>
         <source>%1 s when plugged in; no joint since</source>
         <translation>%1 s al conectarla; ninguna soldadura desde entonces</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="207"/>
+        <location filename="../lib/report/boardpdf.cpp" line="252"/>
         <source>recovers in %1 s now, %2 s when plugged in (%3)</source>
         <translation>se recupera en %1 s ahora, %2 s al conectarla (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="223"/>
+        <location filename="../lib/report/boardpdf.cpp" line="268"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="224"/>
+        <location filename="../lib/report/boardpdf.cpp" line="269"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="225"/>
+        <location filename="../lib/report/boardpdf.cpp" line="270"/>
         <source>Setpoints</source>
         <translation>Consignas</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="225"/>
+        <location filename="../lib/report/boardpdf.cpp" line="270"/>
         <source>Plugged in</source>
         <translation>Conectada</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="226"/>
+        <location filename="../lib/report/boardpdf.cpp" line="271"/>
         <source>Tip wear</source>
         <translation>Desgaste de la punta</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="227"/>
+        <location filename="../lib/report/boardpdf.cpp" line="272"/>
         <source>Tools and settings</source>
         <translation>Herramientas y ajustes</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="237"/>
+        <location filename="../lib/report/boardpdf.cpp" line="282"/>
         <source>, port %1</source>
         <translation>, puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="250"/>
+        <location filename="../lib/report/boardpdf.cpp" line="295"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="251"/>
+        <location filename="../lib/report/boardpdf.cpp" line="296"/>
         <source>What happened</source>
         <translation>Qué pasó</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="253"/>
+        <location filename="../lib/report/boardpdf.cpp" line="298"/>
         <source>None in the journal.</source>
         <translation>Ninguno en el diario.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="258"/>
+        <location filename="../lib/report/boardpdf.cpp" line="303"/>
         <source>Profile applied before</source>
         <translation>Perfil aplicado antes</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="259"/>
+        <location filename="../lib/report/boardpdf.cpp" line="304"/>
         <source>Faults and events while it was made</source>
         <translation>Fallos y eventos mientras se fabricaba</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="264"/>
-        <source>The limits each joint was judged by: the journal does not keep them; a failed joint&apos;s warning among the events names the limit it broke.</source>
-        <translation>Los límites con los que se juzgó cada soldadura: el diario no los guarda; el aviso de una soldadura rechazada entre los eventos nombra el límite que superó.</translation>
+        <location filename="../lib/report/boardpdf.cpp" line="310"/>
+        <source>The limits %1 of the %2 joints were judged by: they were journaled before the journal kept them; a failed joint&apos;s warning among the events names the limit it broke.</source>
+        <translation>Los límites con que se juzgaron %1 de las %2 soldaduras: se registraron antes de que el diario guardara los límites; el aviso de una soldadura rechazada entre los eventos nombra el límite que superó.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="266"/>
+        <location filename="../lib/report/boardpdf.cpp" line="316"/>
         <source>The station&apos;s settings as they stood: the journal keeps only changes made through TipScope (writes and profiles), not those made at the station.</source>
         <translation>Los ajustes de la estación tal como estaban: el diario solo guarda los cambios hechos con TipScope (escrituras y perfiles), no los hechos en la estación.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="269"/>
+        <location filename="../lib/report/boardpdf.cpp" line="319"/>
         <source>Curves of the joints: the journal keeps each joint&apos;s figures, not the tip&apos;s readings.</source>
         <translation>Curvas de las soldaduras: el diario guarda las cifras de cada soldadura, no las lecturas de la punta.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="272"/>
+        <location filename="../lib/report/boardpdf.cpp" line="322"/>
         <source>Not in the journal</source>
         <translation>No está en el diario</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="277"/>
+        <location filename="../lib/report/boardpdf.cpp" line="327"/>
         <source>Written by TipScope %1 on %2 from the journal %3</source>
         <translation>Escrito por TipScope %1 el %2 a partir del diario %3</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="279"/>
+        <location filename="../lib/report/boardpdf.cpp" line="329"/>
         <source>Times are local; figures as measured from the station&apos;s readings, each with how sure it is.</source>
         <translation>Horas locales; cifras medidas a partir de las lecturas de la estación, cada una con su incertidumbre.</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="281"/>
+        <location filename="../lib/report/boardpdf.cpp" line="331"/>
         <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
         <translation>Revisado por: ______________________   Fecha: ____________   Firma: ______________________</translation>
     </message>
     <message>
-        <location filename="../lib/report/boardpdf.cpp" line="298"/>
+        <location filename="../lib/report/boardpdf.cpp" line="348"/>
         <source>cannot write %1: a PDF needs fonts, which need a graphical application (QGuiApplication)</source>
         <translation>no se puede escribir %1: un PDF necesita fuentes, y estas una aplicación gráfica (QGuiApplication)</translation>
     </message>
@@ -3528,17 +3543,17 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
         </translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="108"/>
+        <location filename="../lib/journal/journalschema.cpp" line="117"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="123"/>
+        <location filename="../lib/journal/journalschema.cpp" line="132"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="232"/>
+        <location filename="../lib/journal/journalschema.cpp" line="241"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
@@ -8702,19 +8717,19 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="97"/>
-        <location filename="../lib/journal/journal.cpp" line="111"/>
-        <location filename="../lib/journal/journal.cpp" line="170"/>
+        <location filename="../lib/journal/journal.cpp" line="93"/>
+        <location filename="../lib/journal/journal.cpp" line="107"/>
+        <location filename="../lib/journal/journal.cpp" line="166"/>
         <source>The journal is closed.</source>
         <translation>El diario está cerrado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="101"/>
+        <location filename="../lib/journal/journal.cpp" line="97"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>El diario no da abasto: %1 registros esperan a ser escritos.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="149"/>
+        <location filename="../lib/journal/journal.cpp" line="145"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
     </message>

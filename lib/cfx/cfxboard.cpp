@@ -22,6 +22,17 @@ QJsonObject numericValue(double value, const QString &units) {
             {QStringLiteral("MaximumAcceptableValueUnits"), kNull}};
 }
 
+// A value judged against a limit: acceptable from 0 up to it, in the value's units.
+QJsonObject withMaximum(QJsonObject value, double maximum) {
+    value.insert(QStringLiteral("MinimumAcceptableValue"), 0.0);
+    value.insert(QStringLiteral("MinimumAcceptableValueUnits"),
+                 value.value(QStringLiteral("ValueUnits")));
+    value.insert(QStringLiteral("MaximumAcceptableValue"), maximum);
+    value.insert(QStringLiteral("MaximumAcceptableValueUnits"),
+                 value.value(QStringLiteral("ValueUnits")));
+    return value;
+}
+
 QJsonObject genericValue(const QString &name, const QJsonObject &value) {
     return {{QStringLiteral("Name"), name}, {QStringLiteral("Value"), value}};
 }
@@ -99,9 +110,18 @@ QJsonObject jointStage(int index, const journal::StoredJoint &stored) {
     const QJsonObject stage{{QStringLiteral("StageSequence"), index + 1},
                             {QStringLiteral("StageName"), solderPointName(index, joint)},
                             {QStringLiteral("StageType"), QStringLiteral("Work")}};
+    // The limits the verdict was judged by, where the journal kept them (not before schema 6).
+    QJsonObject dip = numericValue(hundredths(joint.dipDepth), QStringLiteral("K"));
+    QJsonArray setpoints{genericValue(QStringLiteral("TipTemperature"),
+                                      numericValue(joint.setpoint, QStringLiteral("Cel")))};
+    if (joint.limits) {
+        dip = withMaximum(dip, joint.limits->maxDipK);
+        // Within this of the setpoint the tip counts as recovered.
+        setpoints.append(genericValue(QStringLiteral("RecoveryBand"),
+                                      numericValue(joint.limits->bandK, QStringLiteral("K"))));
+    }
     QJsonArray readings{
-        genericValue(QStringLiteral("DipDepth"),
-                     numericValue(hundredths(joint.dipDepth), QStringLiteral("K"))),
+        genericValue(QStringLiteral("DipDepth"), dip),
         genericValue(QStringLiteral("DipDepthUncertainty"),
                      numericValue(hundredths(joint.dipUncertaintyK), QStringLiteral("K"))),
         genericValue(QStringLiteral("LowestTipTemperature"),
@@ -116,9 +136,10 @@ QJsonObject jointStage(int index, const journal::StoredJoint &stored) {
                      numericValue(hundredths(joint.powerIntegral), QStringLiteral("%.s")))};
     // A tip that never came back has no recovery time: no reading, rather than an invented one.
     if (joint.recoveryMs) {
-        readings.append(
-            genericValue(QStringLiteral("RecoveryTime"),
-                         numericValue(seconds(*joint.recoveryMs), QStringLiteral("s"))));
+        QJsonObject recovery = numericValue(seconds(*joint.recoveryMs), QStringLiteral("s"));
+        if (joint.limits)
+            recovery = withMaximum(recovery, seconds(joint.limits->maxRecoveryMs));
+        readings.append(genericValue(QStringLiteral("RecoveryTime"), recovery));
         readings.append(
             genericValue(QStringLiteral("RecoveryTimeUncertainty"),
                          numericValue(seconds(joint.recoveryUncertaintyMs), QStringLiteral("s"))));
@@ -135,9 +156,7 @@ QJsonObject jointStage(int index, const journal::StoredJoint &stored) {
         parameter(QStringLiteral("Tool"), joint.tool),
         parameter(QStringLiteral("StartedAt"), timeText(joint.startMs))};
     return {{QStringLiteral("Stage"), stage},
-            {QStringLiteral("Setpoints"),
-             QJsonArray{genericValue(QStringLiteral("TipTemperature"),
-                                     numericValue(joint.setpoint, QStringLiteral("Cel")))}},
+            {QStringLiteral("Setpoints"), setpoints},
             {QStringLiteral("Readings"), readings},
             {QStringLiteral("Parameters"), parameters}};
 }

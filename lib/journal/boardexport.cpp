@@ -13,8 +13,17 @@ namespace tipscope::journal {
 namespace {
 
 // Why the record has no such figure: the same words in the JSON and the text.
-const char kNoLimits[] = "the journal does not keep the limits each joint was judged by; a "
-                         "failed joint's warning among the events names the limit it broke";
+// Empty when every joint of the board carries the limits it was judged by.
+QString noLimits(const BoardRecord &record) {
+    const int without = jointsWithoutLimits(record);
+    if (without == 0)
+        return {};
+    return QStringLiteral("joints without the limits they were judged by (journaled before the "
+                          "journal kept them): %1 of %2; a failed joint's warning among the "
+                          "events names the limit it broke")
+        .arg(without)
+        .arg(record.joints.size());
+}
 const char kNoSettings[] = "the journal keeps settings only as changes made through TipScope "
                            "(writes, profile applies); changes at the station's own keys and "
                            "the settings as they stood are not in it";
@@ -121,6 +130,11 @@ QString jointDetail(const StoredJoint &stored) {
     if (j.recoveryMs && !j.recoveryBounded)
         detail += QStringLiteral(", recovery ±%1 ms").arg(j.recoveryUncertaintyMs);
     detail += QLatin1Char(')');
+    if (j.limits)
+        detail += QStringLiteral("  limits: dip %1 K, recovery %2 s, band %3 K")
+                      .arg(j.limits->maxDipK)
+                      .arg(QString::number(double(j.limits->maxRecoveryMs) / 1000, 'f', 1))
+                      .arg(j.limits->bandK);
     if (!stored.context.operatorName.isEmpty())
         detail += QStringLiteral("  ") + stored.context.operatorName;
     return detail;
@@ -138,6 +152,10 @@ QString wearShareText(const BoardTip &tip) {
 
 QJsonObject boardJson(const BoardRecord &record, const QString &software) {
     const bool empty = record.isEmpty();
+    QJsonObject notHeld{{QStringLiteral("settings"), QString::fromLatin1(kNoSettings)},
+                        {QStringLiteral("curves"), QString::fromLatin1(kNoCurves)}};
+    if (const QString limits = noLimits(record); !limits.isEmpty())
+        notHeld.insert(QStringLiteral("limits"), limits);
     return {{QStringLiteral("board_serial"), record.serial},
             {QStringLiteral("result"), boardResultName(record.result)},
             {QStringLiteral("first"), empty ? QJsonValue() : QJsonValue(utcText(record.firstMs))},
@@ -149,10 +167,7 @@ QJsonObject boardJson(const BoardRecord &record, const QString &software) {
             {QStringLiteral("events"), jsonArray(record.events, eventJson)},
             {QStringLiteral("tips"), jsonArray(record.tips, tipJson)},
             {QStringLiteral("profiles_before"), jsonArray(record.profilesBefore, eventJson)},
-            {QStringLiteral("not_in_journal"),
-             QJsonObject{{QStringLiteral("limits"), QString::fromLatin1(kNoLimits)},
-                         {QStringLiteral("settings"), QString::fromLatin1(kNoSettings)},
-                         {QStringLiteral("curves"), QString::fromLatin1(kNoCurves)}}},
+            {QStringLiteral("not_in_journal"), notHeld},
             {QStringLiteral("software"), software}};
 }
 
@@ -191,7 +206,8 @@ QString boardText(const BoardRecord &record, const QString &software) {
     listOf(QStringLiteral("last profile applied before the board:"), record.profilesBefore);
     listOf(QStringLiteral("events:"), record.events);
     lines.append(QStringLiteral("not in the journal:"));
-    lines.append(QStringLiteral("  limits: ") + QString::fromLatin1(kNoLimits));
+    if (const QString limits = noLimits(record); !limits.isEmpty())
+        lines.append(QStringLiteral("  limits: ") + limits);
     lines.append(QStringLiteral("  settings: ") + QString::fromLatin1(kNoSettings));
     lines.append(QStringLiteral("  curves: ") + QString::fromLatin1(kNoCurves));
     lines.append(QStringLiteral("software: TipScope ") + software);

@@ -245,4 +245,9 @@ QList<StoredJoint> worstJoints(const BoardRecord &record, int count) {
     return sorted.mid(0, count);
 }
 
+int jointsWithoutLimits(const BoardRecord &record) {
+    return int(std::count_if(record.joints.cbegin(), record.joints.cend(),
+                             [](const StoredJoint &joint) { return !joint.record.limits; }));
+}
+
 } // namespace tipscope::journal

@@ -14,10 +14,10 @@
 //              tip's first joints and of its last ones up to its last joint on the board);
 //   profiles   per device, the last profile applied before the board (settings the journal holds
 //              only as changes made through TipScope: writes and profile applies).
-// What the journal does not hold is not invented: the limits each joint was judged by (a joint
-// warning among the events names the limit a failed joint broke), the station's settings as they
-// stood (changes at the station's own keys are not seen), and the tip's readings during a joint
-// (no curve can be drawn from the journal).
+// What the journal does not hold is not invented: the limits of the joints journaled before it
+// kept them with each joint (schema 6; a joint warning among the events names the limit a failed
+// joint broke), the station's settings as they stood (changes at the station's own keys are not
+// seen), and the tip's readings during a joint (no curve can be drawn from the journal).
 #pragma once
 
 #include "journaltypes.h"
@@ -69,6 +69,9 @@ struct BoardRecord {
 // it. Fails only when the journal cannot be read.
 [[nodiscard]] protocol::Outcome<BoardRecord> buildBoardRecord(const JournalReader &reader,
                                                               const QString &serial);
+
+// How many of the board's joints carry no limits (journaled before the journal kept them).
+[[nodiscard]] int jointsWithoutLimits(const BoardRecord &record);
 
 // The `count` worst joints: failed ones first (too deep, then slow recovery), then by recovery
 // time, slowest first (a joint that never recovered counts as slowest), then by dip.

@@ -32,7 +32,10 @@ const QStringList kFields = {QStringLiteral("ts"),
                              QStringLiteral("start_uncertainty_ms"),
                              QStringLiteral("dip_uncertainty_k"),
                              QStringLiteral("recovery_uncertainty_ms"),
-                             QStringLiteral("recovery_bounded")};
+                             QStringLiteral("recovery_bounded"),
+                             QStringLiteral("band_k"),
+                             QStringLiteral("max_recovery_ms"),
+                             QStringLiteral("max_dip_k")};
 
 double tenths(double value) {
     return std::round(value * 10) / 10;
@@ -94,7 +97,10 @@ QJsonObject jointJson(const StoredJoint &stored) {
             {kFields[21], double(j.startUncertaintyMs)},
             {kFields[22], tenths(j.dipUncertaintyK)},
             {kFields[23], double(j.recoveryUncertaintyMs)},
-            {kFields[24], j.recoveryBounded}};
+            {kFields[24], j.recoveryBounded},
+            {kFields[25], j.limits ? QJsonValue(j.limits->bandK) : QJsonValue()},
+            {kFields[26], j.limits ? QJsonValue(double(j.limits->maxRecoveryMs)) : QJsonValue()},
+            {kFields[27], j.limits ? QJsonValue(j.limits->maxDipK) : QJsonValue()}};
 }
 
 QString jointCsvHeader() {

@@ -4,10 +4,12 @@
 //     ts, end, id, device, line, address, model, software, port, tool, setpoint_c, lowest_c,
 //     dip_k, recovery_ms, duration_ms, power_peak_pct, power_integral_pct_s, verdict,
 //     work_order, board_serial, operator, start_uncertainty_ms, dip_uncertainty_k,
-//     recovery_uncertainty_ms, recovery_bounded
+//     recovery_uncertainty_ms, recovery_bounded, band_k, max_recovery_ms, max_dip_k
 // A joint that never recovered has an empty recovery_ms (null in JSON). lowest_c and dip_k are
 // to a tenth; each *_uncertainty is the ± within which the true value lies, and recovery_bounded
 // (true or false) says the readings could only bound the recovery (see model/joints/jointrecord.h).
+// band_k, max_recovery_ms and max_dip_k are the limits the verdict was judged by, empty (null) for
+// a joint journaled before the journal kept them.
 //
 // A stored event as one JSON object (the MQTT event payload, docs/mqtt.md, and the board record's
 // events): ts, id, kind, severity, device, address, model, port, text, details, work_order,

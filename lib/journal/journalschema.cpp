@@ -67,6 +67,15 @@ const Migration kMigrations[] = {
      {"ALTER TABLE events ADD COLUMN cfx_sent INTEGER NOT NULL DEFAULT 0",
       "UPDATE events SET cfx_sent = 1",
       "CREATE INDEX events_cfx_unsent ON events (id) WHERE cfx_sent = 0"}},
+    // The limits each joint was judged by, for the board record and CFX; NULL in older joints,
+    // whose limits nobody kept. And indexes for the records of one work context (a board's),
+    // which were found by reading every joint and event.
+    {6,
+     {"ALTER TABLE joints ADD COLUMN band_k INTEGER",
+      "ALTER TABLE joints ADD COLUMN max_recovery_ms INTEGER",
+      "ALTER TABLE joints ADD COLUMN max_dip_k INTEGER",
+      "CREATE INDEX joints_by_context ON joints (context_id, start_ms)",
+      "CREATE INDEX events_by_context ON events (context_id, time_ms)"}},
 };
 
 // A failure with its kind, so that a front end can tell waiting from a person's work.

@@ -20,7 +20,7 @@
 
 namespace tipscope::journal {
 
-inline constexpr int kJournalSchemaVersion = 5;
+inline constexpr int kJournalSchemaVersion = 6;
 inline constexpr int kJournalApplicationId = 0x54695053; // "TiPS"
 
 // A fresh connection to the file at `path` named `connectionName`, open, in WAL mode with full

@@ -12,8 +12,9 @@ const char kJointColumns[] =
     "SELECT j.id, j.uid, j.sent, c.work_order, c.board_serial, c.operator, d.line, d.address, "
     "d.model, d.software, j.port, j.tool, j.start_ms, j.end_ms, j.setpoint, j.lowest_tip, "
     "j.dip_depth, j.recovery_ms, j.duration_ms, j.power_peak, j.power_integral, j.verdict, "
-    "j.start_uncertainty_ms, j.dip_uncertainty_k, j.recovery_uncertainty_ms, j.recovery_bounded "
-    "FROM joints j LEFT JOIN devices d ON d.id = j.device_id "
+    "j.start_uncertainty_ms, j.dip_uncertainty_k, j.recovery_uncertainty_ms, j.recovery_bounded, "
+    "j.band_k, j.max_recovery_ms, j.max_dip_k FROM joints j LEFT JOIN devices d ON d.id = "
+    "j.device_id "
     "LEFT JOIN contexts c ON c.id = j.context_id";
 const char kEventColumns[] =
     "SELECT e.id, e.uid, e.sent, c.work_order, c.board_serial, c.operator, d.line, d.address, "
@@ -158,6 +159,9 @@ StoredJoint readJoint(const QSqlQuery &q) {
     j.dipUncertaintyK = q.value(23).toDouble();
     j.recoveryUncertaintyMs = q.value(24).toLongLong();
     j.recoveryBounded = q.value(25).toInt() != 0;
+    if (!q.value(26).isNull())
+        j.limits =
+            model::JudgedLimits{q.value(26).toInt(), q.value(27).toLongLong(), q.value(28).toInt()};
     return s;
 }
 

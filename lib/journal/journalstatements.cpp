@@ -10,8 +10,9 @@ namespace {
 const char kInsertJoint[] =
     "INSERT INTO joints (uid, context_id, device_id, port, tool, start_ms, end_ms, setpoint, "
     "lowest_tip, dip_depth, recovery_ms, duration_ms, power_peak, power_integral, verdict, "
-    "start_uncertainty_ms, dip_uncertainty_k, recovery_uncertainty_ms, recovery_bounded) "
-    "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)";
+    "start_uncertainty_ms, dip_uncertainty_k, recovery_uncertainty_ms, recovery_bounded, band_k, "
+    "max_recovery_ms, max_dip_k) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+    "?, ?, ?)";
 const char kInsertEvent[] =
     "INSERT INTO events (uid, context_id, device_id, port, time_ms, kind, severity, text, "
     "details) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)";
@@ -124,7 +125,10 @@ std::optional<qint64> JournalStatements::insert(const PendingJoint &pending, QSq
                                j.startUncertaintyMs,
                                j.dipUncertaintyK,
                                j.recoveryUncertaintyMs,
-                               j.recoveryBounded ? 1 : 0};
+                               j.recoveryBounded ? 1 : 0,
+                               j.limits ? QVariant(j.limits->bandK) : QVariant(),
+                               j.limits ? QVariant(j.limits->maxRecoveryMs) : QVariant(),
+                               j.limits ? QVariant(j.limits->maxDipK) : QVariant()};
     for (int i = 0; i < int(std::size(values)); ++i)
         m_insertJoint.bindValue(i, values[i]);
     return run(m_insertJoint, error);

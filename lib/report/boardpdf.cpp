@@ -118,15 +118,47 @@ QString sureRecovery(const StoredJoint &stored) {
         .arg(j.recoveryUncertaintyMs);
 }
 
-QString jointRow(const StoredJoint &stored, int number, const BoardRecord &record) {
+// The limits the verdict was judged by, "≤ 80 K, ≤ 5.0 s"; a dash for a joint journaled before
+// the journal kept them.
+QString judgedBy(const StoredJoint &stored) {
+    const auto &limits = stored.record.limits;
+    if (!limits)
+        return QStringLiteral("—");
+    return BoardPdfTr::tr("≤ %1 K, ≤ %2 s")
+        .arg(limits->maxDipK)
+        .arg(QLocale().toString(double(limits->maxRecoveryMs) / 1000, 'f', 1));
+}
+
+// The limits the board's joints were judged by, each once (a joint journaled before the journal
+// kept them has none).
+QList<model::JudgedLimits> limitsOf(const BoardRecord &record) {
+    QList<model::JudgedLimits> all;
+    for (const StoredJoint &joint : record.joints)
+        if (joint.record.limits && !all.contains(*joint.record.limits))
+            all.append(*joint.record.limits);
+    return all;
+}
+
+// A column of its own only where the joints were judged by different limits: a board made with
+// one set of limits says them once, under the table, and keeps its page.
+QString jointRow(const StoredJoint &stored, int number, const BoardRecord &record,
+                 bool limitsColumn) {
     const QString verdict = cell(stored, JointTableModel::Verdict);
     const bool ok = stored.record.verdict == model::JointVerdict::Ok;
-    return row({QString::number(number), timeOnBoard(stored.record.startMs, record),
-                cell(stored, JointTableModel::Device), cell(stored, JointTableModel::Port),
-                cell(stored, JointTableModel::Tool), esc(stored.context.operatorName),
-                esc(stored.context.workOrder), cell(stored, JointTableModel::Setpoint),
-                sureDip(stored), sureRecovery(stored),
-                ok ? verdict : QStringLiteral("<b>%1</b>").arg(verdict)});
+    QStringList cells{QString::number(number),
+                      timeOnBoard(stored.record.startMs, record),
+                      cell(stored, JointTableModel::Device),
+                      cell(stored, JointTableModel::Port),
+                      cell(stored, JointTableModel::Tool),
+                      esc(stored.context.operatorName),
+                      esc(stored.context.workOrder),
+                      cell(stored, JointTableModel::Setpoint),
+                      sureDip(stored),
+                      sureRecovery(stored)};
+    if (limitsColumn)
+        cells.append(judgedBy(stored));
+    cells.append(ok ? verdict : QStringLiteral("<b>%1</b>").arg(verdict));
+    return row(cells);
 }
 
 QString header(const BoardRecord &record) {
@@ -158,21 +190,34 @@ QString header(const BoardRecord &record) {
 }
 
 QString jointsSection(const BoardRecord &record) {
+    const QList<model::JudgedLimits> limits = limitsOf(record);
+    const bool limitsColumn = limits.size() > 1;
     QStringList rows;
     for (int i = 0; i < record.joints.size(); ++i)
-        rows.append(jointRow(record.joints.at(i), i + 1, record));
-    const QStringList head{QStringLiteral("#"),
-                           JointTableModel::columnName(JointTableModel::Time),
-                           BoardPdfTr::tr("Station"),
-                           JointTableModel::columnName(JointTableModel::Port),
-                           JointTableModel::columnName(JointTableModel::Tool),
-                           BoardPdfTr::tr("Operator"),
-                           JointTableModel::columnName(JointTableModel::WorkOrder),
-                           JointTableModel::columnName(JointTableModel::Setpoint),
-                           JointTableModel::columnName(JointTableModel::Dip),
-                           JointTableModel::columnName(JointTableModel::Recovery),
-                           JointTableModel::columnName(JointTableModel::Verdict)};
-    return QStringLiteral("<h3>%1</h3>").arg(BoardPdfTr::tr("Joints")) + table(head, rows);
+        rows.append(jointRow(record.joints.at(i), i + 1, record, limitsColumn));
+    QStringList head{QStringLiteral("#"),
+                     JointTableModel::columnName(JointTableModel::Time),
+                     BoardPdfTr::tr("Station"),
+                     JointTableModel::columnName(JointTableModel::Port),
+                     JointTableModel::columnName(JointTableModel::Tool),
+                     BoardPdfTr::tr("Operator"),
+                     JointTableModel::columnName(JointTableModel::WorkOrder),
+                     JointTableModel::columnName(JointTableModel::Setpoint),
+                     JointTableModel::columnName(JointTableModel::Dip),
+                     JointTableModel::columnName(JointTableModel::Recovery)};
+    if (limitsColumn)
+        head.append(BoardPdfTr::tr("Limits (dip, recovery)"));
+    head.append(JointTableModel::columnName(JointTableModel::Verdict));
+    QString html = QStringLiteral("<h3>%1</h3>").arg(BoardPdfTr::tr("Joints")) + table(head, rows);
+    if (limits.size() == 1)
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(BoardPdfTr::tr("Judged by: a dip of at most %1 K, back within %2 K of "
+                                        "the setpoint in at most %3 s.")
+                             .arg(limits.first().maxDipK)
+                             .arg(limits.first().bandK)
+                             .arg(QLocale().toString(double(limits.first().maxRecoveryMs) / 1000,
+                                                     'f', 1)));
+    return html;
 }
 
 QString worstSection(const BoardRecord &record) {
@@ -259,10 +304,15 @@ QString eventsSection(const BoardRecord &record) {
            eventsTable(BoardPdfTr::tr("Faults and events while it was made"), record.events);
 }
 
-QString notHeldSection() {
-    const QStringList items{
-        BoardPdfTr::tr("The limits each joint was judged by: the journal does not keep them; a "
-                       "failed joint's warning among the events names the limit it broke."),
+QString notHeldSection(const BoardRecord &record) {
+    QStringList items;
+    if (const int without = journal::jointsWithoutLimits(record); without > 0)
+        items.append(BoardPdfTr::tr("The limits %1 of the %2 joints were judged by: they were "
+                                    "journaled before the journal kept them; a failed joint's "
+                                    "warning among the events names the limit it broke.")
+                         .arg(without)
+                         .arg(record.joints.size()));
+    items += QStringList{
         BoardPdfTr::tr("The station's settings as they stood: the journal keeps only changes "
                        "made through TipScope (writes and profiles), not those made at the "
                        "station."),
@@ -287,7 +337,7 @@ QString footer(const BoardReportInfo &info) {
 QString boardHtml(const BoardRecord &record, const BoardReportInfo &info) {
     return QStringLiteral("<html><body style=\"font-size: 8pt\">") + header(record) +
            jointsSection(record) + worstSection(record) + tipsSection(record) +
-           eventsSection(record) + notHeldSection() + footer(info) +
+           eventsSection(record) + notHeldSection(record) + footer(info) +
            QStringLiteral("</body></html>");
 }
 

@@ -149,6 +149,7 @@ private Q_SLOTS:
         work.joints[0].record.recoveryMs = 1250;
         work.joints[0].record.recoveryUncertaintyMs = 40;
         work.joints[0].record.dipDepth = 41.5;
+        work.joints[0].record.limits = model::JudgedLimits{5, 4000, 70};
         work.joints[1].record.recoveryMs.reset(); // the tip never came back
         const QJsonObject data = unitsProcessed(work)
                                      .body.value(QStringLiteral("UnitProcessData"))
@@ -180,6 +181,12 @@ private Q_SLOTS:
         const QJsonObject dip = readingOf(first, QStringLiteral("DipDepth"));
         QCOMPARE(dip.value(QStringLiteral("Value")).toDouble(), 41.5);
         QCOMPARE(dip.value(QStringLiteral("ValueUnits")).toString(), QStringLiteral("K"));
+        // Judged by limits the journal kept: the acceptable range, in the value's units.
+        QCOMPARE(dip.value(QStringLiteral("MaximumAcceptableValue")).toDouble(), 70.0);
+        QCOMPARE(dip.value(QStringLiteral("MaximumAcceptableValueUnits")).toString(),
+                 QStringLiteral("K"));
+        QCOMPARE(recovery.value(QStringLiteral("MaximumAcceptableValue")).toDouble(), 4.0);
+        QCOMPARE(recovery.value(QStringLiteral("MinimumAcceptableValue")).toDouble(), 0.0);
         QCOMPARE(parameterOf(first, QStringLiteral("Verdict")), QStringLiteral("ok"));
         QCOMPARE(parameterOf(first, QStringLiteral("JointId")),
                  work.joints.at(0).uid.toString(QUuid::WithoutBraces));
@@ -187,6 +194,10 @@ private Q_SLOTS:
         // A joint that never recovered has no recovery reading, and says so.
         const QJsonObject second = stages.at(1).toObject();
         QVERIFY(readingOf(second, QStringLiteral("RecoveryTime")).isEmpty());
+        // Journaled before the limits were kept: no range is made up.
+        QVERIFY(readingOf(second, QStringLiteral("DipDepth"))
+                    .value(QStringLiteral("MaximumAcceptableValue"))
+                    .isNull());
         QCOMPARE(parameterOf(second, QStringLiteral("Recovered")), QStringLiteral("false"));
         QCOMPARE(parameterOf(second, QStringLiteral("Verdict")), QStringLiteral("incomplete"));
     }

@@ -116,6 +116,9 @@ SampleBoard writeSampleBoard(const QString &path) {
     sample.joints[5].dipDepth = 95;
     sample.joints[5].lowestTip = 255;
     sample.joints[5].verdict = JointVerdict::TooDeep;
+    // The first was journaled before the journal kept the limits a joint was judged by.
+    for (int i = 1; i < sample.joints.size(); ++i)
+        sample.joints[i].limits = model::JudgedLimits{5, 5000, 80};
     for (const model::JointRecord &j : std::as_const(sample.joints))
         journal.append(j, board);
     sample.events = {

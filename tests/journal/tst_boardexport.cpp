@@ -71,6 +71,17 @@ void TestBoardExport::jsonSaysWhatTheJournalDoesNotHold() {
                                           QStringLiteral("settings")}));
     for (const QJsonValue &why : notHeld)
         QVERIFY(why.toString().contains(QStringLiteral("journal")));
+    // Once every joint carries its limits, they are no longer among what the journal lacks.
+    journal::BoardRecord judged = m_record;
+    for (journal::StoredJoint &joint : judged.joints)
+        joint.record.limits = model::JudgedLimits{5, 5000, 80};
+    QCOMPARE(journal::boardJson(judged, QStringLiteral("9.9.9"))
+                 .value(QStringLiteral("not_in_journal"))
+                 .toObject()
+                 .keys(),
+             (QStringList{QStringLiteral("curves"), QStringLiteral("settings")}));
+    QVERIFY(!journal::boardText(judged, QStringLiteral("9.9.9"))
+                 .contains(QStringLiteral("  limits: joints")));
 }
 
 void TestBoardExport::csvIsTheJointExportOfTheBoardsJoints() {
@@ -96,11 +107,14 @@ void TestBoardExport::textListsEachJointWithHowSureItIs() {
     // Only bounded: the interval, and no ± that would look measured.
     QVERIFY2(jointLines.at(4).contains(QStringLiteral("recovery 0.8-1.8 s bounded")),
              qPrintable(jointLines.at(4)));
-    QVERIFY2(jointLines.at(4).endsWith(QStringLiteral("dip ±0.5 K)  ana")),
+    // Each with the limits it was judged by, where the journal kept them.
+    QVERIFY2(jointLines.at(4).endsWith(
+                 QStringLiteral("dip ±0.5 K)  limits: dip 80 K, recovery 5.0 s, band 5 K  ana")),
              qPrintable(jointLines.at(4)));
     QVERIFY(text.contains(QStringLiteral("E-PT1: tip sensor open")));
     QVERIFY(text.contains(QStringLiteral("profile 0123456789ab applied")));
-    QVERIFY(text.contains(QStringLiteral("\n  limits: the journal does not keep the limits")));
+    QVERIFY(text.contains(QStringLiteral("\n  limits: joints without the limits they were judged "
+                                         "by (journaled before the journal kept them): 1 of 6")));
     QVERIFY(text.endsWith(QStringLiteral("software: TipScope 9.9.9\n")));
 }
 

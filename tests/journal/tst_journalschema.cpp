@@ -115,7 +115,9 @@ void TestJournalSchema::aVersionOneFileIsMigratedKeepingItsRecordsUnsent() {
         Journal journal(path, quickOptions());
         QVERIFY(waitOpened(journal));
         QCOMPARE(journal.state(), JournalState::Ready);
-        QVERIFY(!journal.append(sampleJoint(3, kT0 + 120'000, 2)).isNull());
+        model::JointRecord judged = sampleJoint(3, kT0 + 120'000, 2);
+        judged.limits = model::JudgedLimits{4, 2500, 60};
+        QVERIFY(!journal.append(judged).isNull());
         QVERIFY(journal.flush());
     }
     RawDatabase raw(path);
@@ -144,6 +146,13 @@ void TestJournalSchema::aVersionOneFileIsMigratedKeepingItsRecordsUnsent() {
     QCOMPARE(joints->at(1).record.recoveryMs, std::nullopt);
     QCOMPARE(joints->at(1).record.verdict, model::JointVerdict::Incomplete);
     QCOMPARE(joints->at(2).id, 3); // AUTOINCREMENT goes on after the old rows
+    // Nobody kept the limits of the old joints; a new one keeps those it was judged by.
+    QCOMPARE(first.record.limits, std::nullopt);
+    QCOMPARE(joints->at(2).record.limits, std::optional(model::JudgedLimits{4, 2500, 60}));
+    QCOMPARE(raw.scalar(QStringLiteral("SELECT count(*) FROM sqlite_master WHERE name IN "
+                                       "('joints_by_context', 'events_by_context')"))
+                 .toInt(),
+             2);
 
     const auto unsent = reader.unsentJoints(0, 10);
     QVERIFY2(unsent, qPrintable(unsent.error()));

@@ -35,6 +35,7 @@ private Q_SLOTS:
     void initTestCase();
     void theDocumentHoldsTheBoardItsResultAndEveryJoint();
     void itSaysWhatTheJournalDoesNotHoldInsteadOfDrawingIt();
+    void jointsJudgedByDifferentLimitsShowThemEach();
     void aSmallBoardIsOnePage();
     void aLargeBoardRunsOnOverPages();
     void aFileThatCannotBeWrittenIsRefused();
@@ -66,6 +67,10 @@ void TestBoardPdf::theDocumentHoldsTheBoardItsResultAndEveryJoint() {
     QCOMPARE(html.count(QStringLiteral("± 0.5")),
              m_record.joints.size() + 3); // the table and the three worst
     QVERIFY(html.contains(QStringLiteral("(bounded)")));
+    // One set of limits for the board: said once, under the table.
+    QVERIFY(html.contains(QStringLiteral("Judged by: a dip of at most 80 K, back within 5 K of "
+                                         "the setpoint in at most 5.0 s.")));
+    QVERIFY(!html.contains(QStringLiteral("Limits (dip, recovery)")));
     QVERIFY(html.contains(QStringLiteral("E-PT1: tip sensor open")));
     QVERIFY(html.contains(QStringLiteral("profile 0123456789ab applied")));
     QVERIFY(html.contains(QStringLiteral("(+30 %)")));
@@ -76,9 +81,20 @@ void TestBoardPdf::theDocumentHoldsTheBoardItsResultAndEveryJoint() {
 void TestBoardPdf::itSaysWhatTheJournalDoesNotHoldInsteadOfDrawingIt() {
     const QString html = report::boardHtml(m_record, m_info);
     QVERIFY(html.contains(QStringLiteral("No curves: the journal keeps each joint's figures")));
-    QVERIFY(html.contains(QStringLiteral("The limits each joint was judged by: the journal does "
-                                         "not keep them")));
+    // One joint of the sample board was journaled before the journal kept limits.
+    QVERIFY(html.contains(QStringLiteral("The limits 1 of the 6 joints were judged by: they were "
+                                         "journaled before the journal kept them")));
     QVERIFY(!html.contains(QStringLiteral("<img")));
+}
+
+void TestBoardPdf::jointsJudgedByDifferentLimitsShowThemEach() {
+    journal::BoardRecord record = m_record;
+    record.joints[2].record.limits = model::JudgedLimits{5, 3000, 60};
+    const QString html = report::boardHtml(record, m_info);
+    QVERIFY(html.contains(QStringLiteral("Limits (dip, recovery)")));
+    QCOMPARE(html.count(QStringLiteral("≤ 80 K, ≤ 5.0 s")), record.joints.size() - 2);
+    QCOMPARE(html.count(QStringLiteral("≤ 60 K, ≤ 3.0 s")), 1);
+    QVERIFY(!html.contains(QStringLiteral("Judged by:")));
 }
 
 void TestBoardPdf::aSmallBoardIsOnePage() {

@@ -394,6 +394,7 @@ std::optional<JointRecord> JointDetector::finish(End end, qint64 endMs) {
         end == End::Recovered && j.recoveryMs ? j.startMs + *j.recoveryMs : qMax(endMs, j.startMs);
     j.durationMs = j.endMs - j.startMs;
     j.verdict = end == End::Broken ? JointVerdict::Incomplete : judge(j, m_limits);
+    j.limits = JudgedLimits{m_limits.bandK, m_limits.maxRecoveryMs, m_limits.maxDipK};
     return j;
 }
 

@@ -32,7 +32,7 @@ bool operator==(const JointRecord &a, const JointRecord &b) {
            a.powerIntegral == b.powerIntegral && a.verdict == b.verdict &&
            a.startUncertaintyMs == b.startUncertaintyMs && a.dipUncertaintyK == b.dipUncertaintyK &&
            a.recoveryUncertaintyMs == b.recoveryUncertaintyMs &&
-           a.recoveryBounded == b.recoveryBounded;
+           a.recoveryBounded == b.recoveryBounded && a.limits == b.limits;
 }
 
 QString recoveryWords(const JointRecord &joint) {

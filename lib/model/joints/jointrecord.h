@@ -36,6 +36,17 @@ enum class JointVerdict {
 inline constexpr JointVerdict kJointVerdicts[] = {JointVerdict::Ok, JointVerdict::SlowRecovery,
                                                   JointVerdict::TooDeep, JointVerdict::Incomplete};
 
+// The limits a joint's verdict was judged by (JointLimits without what judges a tip, not a joint).
+struct JudgedLimits {
+    int bandK = 0;
+    qint64 maxRecoveryMs = 0;
+    int maxDipK = 0;
+
+    friend bool operator==(const JudgedLimits &a, const JudgedLimits &b) {
+        return a.bandK == b.bandK && a.maxRecoveryMs == b.maxRecoveryMs && a.maxDipK == b.maxDipK;
+    }
+};
+
 struct JointRecord {
     DeviceIdentity device;
     int port = 0;
@@ -54,6 +65,8 @@ struct JointRecord {
     double dipUncertaintyK = 0;
     qint64 recoveryUncertaintyMs = 0;
     bool recoveryBounded = false;
+    // Empty for a joint journaled before the limits were kept with it (journal schema 6).
+    std::optional<JudgedLimits> limits;
 
     friend bool operator==(const JointRecord &a, const JointRecord &b);
     friend bool operator!=(const JointRecord &a, const JointRecord &b) { return !(a == b); }

@@ -140,6 +140,8 @@ void TestJointDetector::theVerdictFollowsTheLimits() {
     const QList<JointRecord> joints = feed(d, Curve{kT0 + 5000, dip, climbMs}, kT0, kT0 + 20'000);
     QCOMPARE(joints.size(), 1);
     QCOMPARE(joints.first().verdict, verdict);
+    // The joint keeps the limits it was judged by, for the journal and the board's record.
+    QVERIFY(joints.first().limits == JudgedLimits({5, 3000, 80}));
 }
 
 void TestJointDetector::heatUpsWakesAndEarlyDipsAreNoJoints() {
