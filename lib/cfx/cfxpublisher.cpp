@@ -21,6 +21,10 @@ CfxPublisher::CfxPublisher(journal::Journal &journal, const CfxSettings &setting
         });
     });
     connect(&m_sender, &AmqpSender::connected, this, &CfxPublisher::stationsChanged);
+    connect(&m_sender, &AmqpSender::connected, this, [this] {
+        for (auto &[station, watched] : m_watched)
+            tellState(watched, std::nullopt);
+    });
     connect(&m_sender, &AmqpSender::disconnected, this, [this] { m_announced.clear(); });
     connect(&m_sender, &AmqpSender::accepted, this, [this](quint64 tag) {
         if (m_goodbyes.remove(tag) && m_goodbyes.isEmpty() && m_stopping)
@@ -66,6 +70,32 @@ void CfxPublisher::stationsChanged() {
         if (!m_announced.contains(handle) &&
             sendNow(handle, endpointConnected(handle, QString(), QString())) != 0)
             m_announced.insert(handle);
+}
+
+void CfxPublisher::watchStation(model::StationModel &station, const QString &handle) {
+    if (m_watched.count(&station))
+        return;
+    Watched watched{std::make_unique<StationStateWatcher>(station), handle, std::nullopt};
+    watched.told = watched.watcher->condition(); // the present needs no message
+    connect(watched.watcher.get(), &StationStateWatcher::changed, this,
+            [this, key = &station](StationCondition before, std::optional<qint64> lastedMs) {
+                Watched &w = m_watched.at(key);
+                // The duration is the old condition's only if the broker heard that one.
+                if (!w.told)
+                    w.told = before;
+                tellState(w, w.told == before ? lastedMs : std::nullopt);
+            });
+    connect(&station, &QObject::destroyed, this, [this, key = &station] { m_watched.erase(key); });
+    m_watched.emplace(&station, std::move(watched));
+}
+
+void CfxPublisher::tellState(Watched &watched, std::optional<qint64> lastedMs) {
+    const std::optional<StationCondition> now = watched.watcher->condition();
+    if (!now || !watched.told || *now == *watched.told || m_stopping ||
+        m_sender.state() != AmqpSender::State::Connected)
+        return;
+    if (sendNow(watched.handle, stationStateChanged(*watched.told, lastedMs, *now, {})) != 0)
+        watched.told = now;
 }
 
 void CfxPublisher::finishStop() {

@@ -3,7 +3,9 @@
 // (cfxforwarder.h: faults, store and forward) and adds what describes the present and so is not
 // spooled: EndpointConnected for every station once per broker connection (when the connection
 // opens, or when the station is found: stationsChanged()), a Heartbeat per station every
-// heartbeatS, and EndpointShuttingDown on stop().
+// heartbeatS, StationStateChanged when a watched station's condition changes (watchStation(),
+// stationstate.h), and EndpointShuttingDown on stop(). A change while the broker is away is said
+// once it is back, from the state the broker last heard to the present one, its duration unknown.
 //
 // The stations are named by handles() (asked anew each time, so stations found later are
 // included) and the journal's records by handleOf(); boardStations() says which stations work on
@@ -16,11 +18,14 @@
 #include "cfxforwarder.h"
 #include "cfxmessages.h"
 #include "cfxsettings.h"
+#include "stationstate.h"
 
 #include <QObject>
 #include <QSet>
 #include <QTimer>
 #include <functional>
+#include <map>
+#include <memory>
 
 namespace tipscope::cfx {
 
@@ -37,6 +42,9 @@ public:
     void stop(int timeoutMs = 3000);
     // Stations were found or lost: the new ones say they are connected.
     void stationsChanged();
+    // Follows `station`'s condition as the endpoint `handle` (once per station; forgotten when
+    // the station goes).
+    void watchStation(model::StationModel &station, const QString &handle);
 
     [[nodiscard]] AmqpSender &sender() { return m_sender; }
     [[nodiscard]] CfxForwarder &forwarder() { return m_forwarder; }
@@ -45,9 +53,16 @@ Q_SIGNALS:
     void stopped();
 
 private:
+    struct Watched {
+        std::unique_ptr<StationStateWatcher> watcher;
+        QString handle;
+        std::optional<StationCondition> told; // what the broker last heard, or was never told
+    };
+
     void sendToEach(const std::function<Message(const QString &handle)> &make);
     [[nodiscard]] quint64 sendNow(const QString &handle, const Message &message);
     void finishStop();
+    void tellState(Watched &watched, std::optional<qint64> lastedMs);
 
     CfxSettings m_settings;
     Handles m_handles;
@@ -57,6 +72,7 @@ private:
     QTimer m_stopTimer;
     QSet<quint64> m_goodbyes;  // waiting for the broker before stopped()
     QSet<QString> m_announced; // on this connection
+    std::map<const model::StationModel *, Watched> m_watched;
     bool m_stopping = false;
 };
 

@@ -103,7 +103,20 @@ void PlantAgent::startCfx() {
     watchCfx();
     connect(&m_lines.workspace(), &model::Workspace::lineDevicesChanged, m_cfx.get(),
             &cfx::CfxPublisher::stationsChanged);
+    connect(&m_lines.workspace(), &model::Workspace::lineDevicesChanged, this,
+            &PlantAgent::watchCfxStations);
+    watchCfxStations();
     m_cfx->start();
+}
+
+void PlantAgent::watchCfxStations() {
+    if (!m_cfx)
+        return;
+    model::Workspace &workspace = m_lines.workspace();
+    for (int i = 0; i < workspace.count(); ++i)
+        for (model::DeviceModel *device : workspace.session(i)->devices())
+            if (auto *station = qobject_cast<model::StationModel *>(device))
+                m_cfx->watchStation(*station, cfxHandleOf(station->identity()));
 }
 
 void PlantAgent::watchCfx() {

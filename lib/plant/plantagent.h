@@ -68,6 +68,7 @@ private:
     void failJournal(const QString &why);
     void startCfx();
     void watchCfx();
+    void watchCfxStations();
     // A station's CFX handle: vendor, model, and the workspace line's name with its address
     // (TipScope does not read a station's serial number today).
     [[nodiscard]] QString cfxHandleOf(const model::DeviceIdentity &device);

@@ -9,6 +9,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTest>
+#include <functional>
 
 namespace tipscope::testing {
 
@@ -45,6 +46,12 @@ public:
     bool waitForMessages(int count, int timeoutMs = 30000) {
         return QTest::qWaitFor([this, count] { return read(), m_messages.size() >= count; },
                                timeoutMs);
+    }
+
+    // Waits (with the event loop) until `done` holds for the messages arrived so far.
+    bool waitUntil(const std::function<bool(const QList<QJsonObject> &)> &done,
+                   int timeoutMs = 30000) {
+        return QTest::qWaitFor([this, &done] { return read(), done(m_messages); }, timeoutMs);
     }
 
     // Waits for the consumer to end on its own (all messages received, or its timeout).

@@ -2,13 +2,16 @@
 // by the independent Python consumer. Every station of the demo line says it is connected once
 // the broker takes it, and says goodbye when the agent is stopped cleanly; its MQTT broker being
 // absent changes nothing for CFX, and an agent that publishes CFX only ("broker": false) does the
-// same without ever trying MQTT. A board named in the work context is a CFX transaction.
+// same without ever trying MQTT. A board named in the work context is a CFX transaction, and a
+// station's changes of state are said as they happen.
 #include "agentprocess.h"
 #include "cfxtesting.h"
 
 #include "journal/journalreader.h"
 #include "journal/workcontextfile.h"
+#include "ptyfixtures.h"
 
+#include <QElapsedTimer>
 #include <QJsonObject>
 #include <QTest>
 
@@ -16,6 +19,7 @@ using namespace tipscope;
 using testing::AgentProcess;
 using testing::CfxConsumer;
 using testing::RabbitMqBroker;
+using testing::SimProcess;
 
 class TstCfxAgent : public QObject {
     Q_OBJECT
@@ -141,6 +145,93 @@ private Q_SLOTS:
                      .value(QStringLiteral("SolderPoints"))
                      .toArray()
                      .isEmpty());
+    }
+
+    // A station on a simulator steered by the test: its tool leaves the stand, then a port
+    // fails. Each change is one StationStateChanged from the station's endpoint, with the SEMI
+    // E10 codes as text, how long the old state lasted once the agent saw it begin.
+    void aStationSaysWhenItsStateChanges() {
+        SimProcess sim;
+        QString error;
+        const QString line = sim.start({QStringLiteral("--model"), QStringLiteral("DME"),
+                                        QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:0")},
+                                       &error);
+        QVERIFY2(!line.isEmpty(), qPrintable(error));
+        for (int port = 1; port <= 4; ++port)
+            sim.command(QStringLiteral("status %1 1").arg(port)); // every tool in its stand
+        CfxConsumer consumer;
+        QVERIFY2(consumer.start(m_broker->url(),
+                                QStringLiteral("/exchange/amq.topic/#.StationStateChanged"), 100),
+                 qPrintable(consumer.output()));
+        AgentProcess agent;
+        agent.configure(line, 1, {},
+                        {{QStringLiteral("cfx"), cfxSection()}, {QStringLiteral("broker"), false}});
+        QVERIFY2(agent.start(&error), qPrintable(error));
+        // Port 4 between its stand and sleep changes nothing for the station, which stays in
+        // the stand; once the journal holds such a change, the agent has read every port.
+        journal::JournalReader reader;
+        journal::EventFilter port4;
+        port4.kinds = {journal::JournalEvent::Kind::Status};
+        port4.port = 4;
+        QElapsedTimer toggle;
+        toggle.start();
+        int mode = 1;
+        const auto port4Changed = [&] {
+            if (toggle.elapsed() > 1500) {
+                mode = 3 - mode; // 1 (stand) and 2 (sleep) in turn
+                sim.command(QStringLiteral("status 4 %1").arg(mode));
+                toggle.restart();
+            }
+            const auto events =
+                reader.keepOpen(agent.journalPath())
+                    ? reader.events(port4)
+                    : protocol::Outcome<QList<journal::StoredEvent>>(QList<journal::StoredEvent>());
+            return events && !events->isEmpty();
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(port4Changed(), qPrintable(agent.log()), 60000);
+        const auto stateOf = [](const QJsonObject &message, const QString &field) {
+            return message.value(QStringLiteral("envelope"))
+                .toObject()
+                .value(QStringLiteral("MessageBody"))
+                .toObject()
+                .value(field);
+        };
+        // The first message from `from` on whose new state is `state`, or -1.
+        const auto firstTo = [&](const QList<QJsonObject> &messages, const QString &state,
+                                 int from) {
+            for (int i = from; i < messages.size(); ++i)
+                if (stateOf(messages.at(i), QStringLiteral("NewState")).toString() == state)
+                    return i;
+            return -1;
+        };
+        int working = -1, failed = -1;
+        sim.command(QStringLiteral("status 2 0")); // a tool out of its stand
+        QVERIFY2(consumer.waitUntil([&](const QList<QJsonObject> &messages) {
+            return (working = firstTo(messages, QStringLiteral("1100"), 0)) >= 0;
+        }),
+                 qPrintable(consumer.output() + agent.log()));
+        sim.command(QStringLiteral("port-error 2 1")); // short circuit
+        QVERIFY2(consumer.waitUntil([&](const QList<QJsonObject> &messages) {
+            return (failed = firstTo(messages, QStringLiteral("5000"), working + 1)) >= 0;
+        }),
+                 qPrintable(consumer.output() + agent.log()));
+        QCOMPARE(agent.stop(), 0);
+        QVERIFY2(consumer.complaints().isEmpty(), qPrintable(consumer.complaints().join('\n')));
+        const QList<QJsonObject> &messages = consumer.messages();
+        // Before the tool left its stand the station rested (in the stand, or asleep after the
+        // simulated station's sleep delay, as a real one does); every change follows the last.
+        for (int i = 1; i <= failed; ++i)
+            QCOMPARE(stateOf(messages.at(i), QStringLiteral("OldState")).toString(),
+                     stateOf(messages.at(i - 1), QStringLiteral("NewState")).toString());
+        QVERIFY(
+            QStringList({QStringLiteral("2200"), QStringLiteral("2100")})
+                .contains(stateOf(messages.at(working), QStringLiteral("OldState")).toString()));
+        // A tool at work neither rests nor sleeps: the next change is the fault, and the agent
+        // saw the work begin, so it says how long it lasted.
+        QCOMPARE(failed, working + 1);
+        QCOMPARE(stateOf(messages.at(failed), QStringLiteral("OldState")).toString(),
+                 QStringLiteral("1100"));
+        QVERIFY(stateOf(messages.at(failed), QStringLiteral("OldStateDuration")).isString());
     }
 };
 
