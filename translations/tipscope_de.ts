@@ -87,77 +87,82 @@
         <translation>Umgebungsvariable %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="195"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="196"/>
         <source>cfx.host must name the AMQP broker</source>
         <translation>cfx.host muss den AMQP-Broker nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="198"/>
         <source>cfx.address must be /exchange/NAME, /exchange/NAME/KEY or /queue/NAME, not &quot;%1&quot;</source>
         <translation>cfx.address muss /exchange/NAME, /exchange/NAME/KEY oder /queue/NAME sein, nicht „%1“</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="201"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="204"/>
+        <source>cfx.request_address must be a queue, /queue/NAME, not &quot;%1&quot;</source>
+        <translation>cfx.request_address muss eine Warteschlange sein, /queue/NAME, nicht „%1“</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="207"/>
         <source>cfx.vendor must be a name of at most %1 characters</source>
         <translation>cfx.vendor muss ein Name mit höchstens %1 Zeichen sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="204"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="210"/>
         <source>cfx.tls.cert_file and cfx.tls.key_file: give both or neither</source>
         <translation>cfx.tls.cert_file und cfx.tls.key_file: beide oder keines angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="206"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="212"/>
         <source>cfx.password_file and cfx.password_env: give one of them</source>
         <translation>cfx.password_file und cfx.password_env: nur eines von beiden angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="234"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
         <source>broker is false: then a cfx section must say where the lines are published</source>
         <translation>broker ist false: dann muss ein cfx-Abschnitt sagen, wohin die Linien veröffentlicht werden</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="237"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="243"/>
         <source>site must name the site</source>
         <translation>site muss den Standort nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="239"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="245"/>
         <source>site must be at most %1 characters long, not %2</source>
         <translation>site darf höchstens %1 Zeichen lang sein, nicht %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="244"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="250"/>
         <source>site must not hold control characters</source>
         <translation>site darf keine Steuerzeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="246"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="252"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace muss die Arbeitsbereichsdatei der zu betreibenden Linien nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="275"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="281"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="284"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="282"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="288"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>die Konfiguration %1 ist zu groß, um eine zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="284"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="290"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>die Konfiguration %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="286"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="292"/>
         <source>it is a list</source>
         <translation>es ist eine Liste</translation>
     </message>
@@ -1703,17 +1708,17 @@
 <context>
     <name>Cfx</name>
     <message>
-        <location filename="../lib/cfx/amqpsender.cpp" line="145"/>
+        <location filename="../lib/cfx/amqpsender.cpp" line="212"/>
         <source>rejected by the broker</source>
         <translation>vom Broker abgelehnt</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/amqpsender.cpp" line="148"/>
+        <location filename="../lib/cfx/amqpsender.cpp" line="215"/>
         <source>released by the broker</source>
         <translation>vom Broker freigegeben</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/amqpsender.cpp" line="176"/>
+        <location filename="../lib/cfx/amqpsender.cpp" line="261"/>
         <source>the connection closed</source>
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
@@ -1756,6 +1761,16 @@
         <location filename="../lib/cfx/cfxenvelope.cpp" line="187"/>
         <source>A gzip CFX message is damaged or larger than %1 bytes.</source>
         <translation>Eine gzip-komprimierte CFX-Nachricht ist beschädigt oder größer als %1 Bytes.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxrequests.cpp" line="121"/>
+        <source>A CFX request (%1) without a reply-to address: it cannot be answered.</source>
+        <translation>Eine CFX-Anfrage (%1) ohne Antwortadresse (reply-to): sie kann nicht beantwortet werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxrequests.cpp" line="126"/>
+        <source>A CFX request (%1) for &quot;%2&quot;, which is no endpoint here.</source>
+        <translation>Eine CFX-Anfrage (%1) an „%2“, das hier kein Endpunkt ist.</translation>
     </message>
 </context>
 <context>

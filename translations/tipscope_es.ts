@@ -87,77 +87,82 @@
         <translation>variable de entorno %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="195"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="196"/>
         <source>cfx.host must name the AMQP broker</source>
         <translation>cfx.host debe nombrar el broker AMQP</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="198"/>
         <source>cfx.address must be /exchange/NAME, /exchange/NAME/KEY or /queue/NAME, not &quot;%1&quot;</source>
         <translation>cfx.address debe ser /exchange/NOMBRE, /exchange/NOMBRE/CLAVE o /queue/NOMBRE, no «%1»</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="201"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="204"/>
+        <source>cfx.request_address must be a queue, /queue/NAME, not &quot;%1&quot;</source>
+        <translation>cfx.request_address debe ser una cola, /queue/NOMBRE, no «%1»</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="207"/>
         <source>cfx.vendor must be a name of at most %1 characters</source>
         <translation>cfx.vendor debe ser un nombre de %1 caracteres como máximo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="204"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="210"/>
         <source>cfx.tls.cert_file and cfx.tls.key_file: give both or neither</source>
         <translation>cfx.tls.cert_file y cfx.tls.key_file: indique los dos o ninguno</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="206"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="212"/>
         <source>cfx.password_file and cfx.password_env: give one of them</source>
         <translation>cfx.password_file y cfx.password_env: indique solo uno de ellos</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="234"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
         <source>broker is false: then a cfx section must say where the lines are published</source>
         <translation>broker es false: entonces una sección cfx debe indicar dónde se publican las líneas</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="237"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="243"/>
         <source>site must name the site</source>
         <translation>site debe indicar la planta</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="239"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="245"/>
         <source>site must be at most %1 characters long, not %2</source>
         <translation>site admite como máximo %1 caracteres, no %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="244"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="250"/>
         <source>site must not hold control characters</source>
         <translation>site no puede contener caracteres de control</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="246"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="252"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace debe indicar el archivo de espacio de trabajo de las líneas que se ejecutan</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="275"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="281"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>no se puede leer la configuración %1: no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="284"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>no se puede leer la configuración %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="282"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="288"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>la configuración %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="284"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="290"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>la configuración %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="286"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="292"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -1703,17 +1708,17 @@
 <context>
     <name>Cfx</name>
     <message>
-        <location filename="../lib/cfx/amqpsender.cpp" line="145"/>
+        <location filename="../lib/cfx/amqpsender.cpp" line="212"/>
         <source>rejected by the broker</source>
         <translation>rechazado por el broker</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/amqpsender.cpp" line="148"/>
+        <location filename="../lib/cfx/amqpsender.cpp" line="215"/>
         <source>released by the broker</source>
         <translation>liberado por el broker</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/amqpsender.cpp" line="176"/>
+        <location filename="../lib/cfx/amqpsender.cpp" line="261"/>
         <source>the connection closed</source>
         <translation>la conexión se cerró</translation>
     </message>
@@ -1756,6 +1761,16 @@
         <location filename="../lib/cfx/cfxenvelope.cpp" line="187"/>
         <source>A gzip CFX message is damaged or larger than %1 bytes.</source>
         <translation>Un mensaje CFX con gzip está dañado o supera los %1 bytes.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxrequests.cpp" line="121"/>
+        <source>A CFX request (%1) without a reply-to address: it cannot be answered.</source>
+        <translation>Una petición CFX (%1) sin dirección de respuesta (reply-to): no se puede responder.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxrequests.cpp" line="126"/>
+        <source>A CFX request (%1) for &quot;%2&quot;, which is no endpoint here.</source>
+        <translation>Una petición CFX (%1) para «%2», que aquí no es ningún punto final.</translation>
     </message>
 </context>
 <context>

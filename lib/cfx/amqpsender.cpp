@@ -9,11 +9,14 @@
 #include <proton/connection.hpp>
 #include <proton/connection_options.hpp>
 #include <proton/container.hpp>
+#include <proton/delivery.hpp>
 #include <proton/delivery_mode.hpp>
 #include <proton/error_condition.hpp>
 #include <proton/message.hpp>
 #include <proton/message_id.hpp>
 #include <proton/messaging_handler.hpp>
+#include <proton/receiver.hpp>
+#include <proton/receiver_options.hpp>
 #include <proton/sender.hpp>
 #include <proton/sender_options.hpp>
 #include <proton/session.hpp>
@@ -25,7 +28,9 @@
 #include <atomic>
 #include <cstring>
 #include <deque>
+#include <list>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 Q_LOGGING_CATEGORY(lcAmqp, "tipscope.cfx.amqp")
@@ -36,6 +41,22 @@ namespace {
 
 std::string utf8(const QString &text) {
     return text.toStdString();
+}
+
+QString text(const std::string &bytes) {
+    return QString::fromStdString(bytes);
+}
+
+// A request's body: one Data section, or a string as some clients send; anything else is none.
+std::optional<QByteArray> bodyOf(const proton::message &message) {
+    const proton::value &body = message.body();
+    if (body.type() == proton::BINARY) {
+        const auto bytes = proton::get<proton::binary>(body);
+        return QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
+    }
+    if (body.type() == proton::STRING)
+        return QByteArray::fromStdString(proton::get<std::string>(body));
+    return std::nullopt;
 }
 
 proton::binary tagBytes(quint64 tag) {
@@ -124,10 +145,49 @@ public:
         }
         proton::sender_options options;
         options.delivery_mode(proton::delivery_mode::AT_LEAST_ONCE);
-        connection.open_sender(utf8(m_settings.address), options);
+        m_opening = connection.open_sender(utf8(m_settings.address), options);
+        if (!m_settings.requestAddress.isEmpty()) {
+            proton::receiver_options requests;
+            requests.auto_accept(false).credit_window(kRequestCredit);
+            connection.open_receiver(utf8(m_settings.requestAddress), requests);
+        }
+    }
+
+    void reply(int generation, const std::string &address, proton::message message) {
+        const std::lock_guard<std::mutex> lock(m_workMutex);
+        if (!m_work)
+            return;
+        m_work->add([this, generation, address, message = std::move(message)]() mutable {
+            if (generation != m_generation || !m_sender)
+                return;
+            ReplyLink &link = replyLink(address);
+            link.outbox.push_back(std::move(message));
+            flushReplies(link);
+        });
+    }
+
+    void on_message(proton::delivery &delivery, proton::message &message) override {
+        const std::optional<QByteArray> body = bodyOf(message);
+        if (!body || body->size() > kMaxRequestBytes) {
+            delivery.reject(); // hostile or foreign: never parsed
+            qCWarning(lcAmqp, "a request that is not CFX or is larger than %lld bytes was refused",
+                      static_cast<long long>(kMaxRequestBytes));
+            return;
+        }
+        AmqpSender::Request request{*body, text(message.content_encoding()),
+                                    text(proton::to_string(message.id())),
+                                    text(message.reply_to())};
+        delivery.accept();
+        post([request](AmqpSender &owner) { Q_EMIT owner.requestReceived(request); });
     }
 
     void on_sender_open(proton::sender &sender) override {
+        if (!(sender == m_opening)) { // an answer's link
+            for (ReplyLink &link : m_replies)
+                if (link.sender == sender)
+                    flushReplies(link);
+            return;
+        }
         m_sender = sender;
         m_delayMs = m_settings.retryMinMs;
         m_lastError.clear();
@@ -135,11 +195,18 @@ public:
         post([generation](AmqpSender &owner) { owner.onOpened(generation); });
     }
 
-    void on_sendable(proton::sender &) override { flush(); }
+    void on_sendable(proton::sender &sender) override {
+        if (sender == m_sender)
+            return flush();
+        for (ReplyLink &link : m_replies)
+            if (link.sender == sender)
+                flushReplies(link);
+    }
 
     void on_tracker_accept(proton::tracker &tracker) override {
         const quint64 tag = tagOf(tracker);
-        post([tag](AmqpSender &owner) { Q_EMIT owner.accepted(tag); });
+        if (tag != kReplyTag)
+            post([tag](AmqpSender &owner) { Q_EMIT owner.accepted(tag); });
     }
     void on_tracker_reject(proton::tracker &tracker) override {
         settleRefused(tracker, QCoreApplication::translate("Cfx", "rejected by the broker"));
@@ -153,8 +220,24 @@ public:
         remember(connection.error());
     }
     void on_sender_error(proton::sender &sender) override {
+        for (auto it = m_replies.begin(); it != m_replies.end(); ++it)
+            if (it->sender == sender) {
+                // A requester's reply address the broker does not know: that answer is lost,
+                // the connection and everything else stay.
+                qCWarning(lcAmqp, "cannot answer a CFX request at %s: %s", it->address.c_str(),
+                          sender.error().what().c_str());
+                m_replies.erase(it);
+                return;
+            }
         remember(sender.error());
         sender.connection().close();
+    }
+    void on_receiver_error(proton::receiver &receiver) override {
+        // Requests cannot be taken: said, while the messages go on.
+        const QString why =
+            describeAmqpError(text(receiver.error().name()), text(receiver.error().description()),
+                              m_settings.requestAddress);
+        post([why](AmqpSender &owner) { Q_EMIT owner.problem(why); });
     }
     void on_session_error(proton::session &session) override {
         remember(session.error());
@@ -170,7 +253,9 @@ public:
             m_work = nullptr; // goes with the connection
         }
         m_sender = proton::sender();
+        m_opening = proton::sender();
         m_outbox.clear();
+        m_replies.clear();
         const int generation = m_generation;
         const QString reason = m_lastError.isEmpty()
                                    ? QCoreApplication::translate("Cfx", "the connection closed")
@@ -189,6 +274,38 @@ private:
         quint64 tag;
         proton::message message;
     };
+    struct ReplyLink {
+        std::string address;
+        proton::sender sender;
+        std::deque<proton::message> outbox;
+    };
+    // Requests waiting to be answered are few: a requester waits for each answer.
+    static constexpr int kRequestCredit = 10;
+    // Answers are not tracked: their tag is none of the spooled messages'.
+    static constexpr quint64 kReplyTag = 0;
+
+    ReplyLink &replyLink(const std::string &address) {
+        for (auto it = m_replies.begin(); it != m_replies.end(); ++it)
+            if (it->address == address) {
+                m_replies.splice(m_replies.end(), m_replies, it); // the newest last
+                return m_replies.back();
+            }
+        if (int(m_replies.size()) >= kMaxReplyLinks) {
+            m_replies.front().sender.close();
+            m_replies.pop_front();
+        }
+        proton::sender_options options;
+        options.delivery_mode(proton::delivery_mode::AT_LEAST_ONCE);
+        m_replies.push_back({address, m_sender.connection().open_sender(address, options), {}});
+        return m_replies.back();
+    }
+
+    void flushReplies(ReplyLink &link) {
+        while (link.sender.credit() > 0 && !link.outbox.empty()) {
+            link.sender.send(link.outbox.front(), tagBytes(kReplyTag));
+            link.outbox.pop_front();
+        }
+    }
 
     template <typename F> void post(F what) {
         QPointer<AmqpSender> owner(m_owner);
@@ -249,6 +366,10 @@ private:
 
     void settleRefused(proton::tracker &tracker, const QString &reason) {
         const quint64 tag = tagOf(tracker);
+        if (tag == kReplyTag) {
+            qCWarning(lcAmqp, "an answer to a CFX request was %s", qPrintable(reason));
+            return;
+        }
         post([tag, reason](AmqpSender &owner) { Q_EMIT owner.refused(tag, reason); });
     }
 
@@ -266,7 +387,9 @@ private:
     proton::work_queue *m_work = nullptr; // the open connection's, guarded by m_workMutex
     std::thread m_thread;
     proton::sender m_sender;
+    proton::sender m_opening; // the link to the exchange, until it opens
     std::deque<Pending> m_outbox;
+    std::list<ReplyLink> m_replies; // the least recently used first
     int m_generation = 0;
     int m_delayMs = 1000;
     QString m_lastError;
@@ -301,6 +424,12 @@ quint64 AmqpSender::send(const AmqpMessage &message) {
     const quint64 tag = ++m_nextTag;
     m_engine->enqueue(m_generation, tag, protonMessage(message));
     return tag;
+}
+
+void AmqpSender::reply(const QString &address, const AmqpMessage &message) {
+    if (m_state != State::Connected || !m_engine || address.isEmpty())
+        return;
+    m_engine->reply(m_generation, utf8(address), protonMessage(message));
 }
 
 QString AmqpSender::where() const {

@@ -18,6 +18,12 @@
 // RabbitMQ's addresses keep their leading slash: the link is opened on the connection with the
 // whole address, never written into the connection URL.
 //
+// Requests: with a requestAddress the sender also takes messages from that queue, each at most
+// kMaxRequestBytes (a larger one is rejected unread), and hands them over as requestReceived();
+// reply() sends an answer to the address a request named, on a link of its own (at most
+// kMaxReplyLinks at a time, the oldest closed first). Answers are not spooled: a request whose
+// answer is lost is asked again, as CFX's requesters do.
+//
 // The password lives in Settings only; it is never logged nor put into a problem text.
 #pragma once
 
@@ -42,11 +48,15 @@ public:
         QString user; // empty: anonymous
         QByteArray password;
         QString address = QStringLiteral("/exchange/amq.topic");
+        QString requestAddress; // empty: no requests are taken
         int retryMinMs = 1000;
         int retryMaxMs = 60000;
     };
     enum class State { Stopped, Connecting, Connected, WaitingToRetry };
     Q_ENUM(State)
+    static constexpr int kMaxReplyLinks = 8;
+
+    using Request = AmqpRequest;
 
     explicit AmqpSender(QObject *parent = nullptr);
     ~AmqpSender() override; // stops the thread, abandoning what was not settled
@@ -57,6 +67,8 @@ public:
     // Hands a message over; 0 when not connected (nothing is queued then). Else its tag for
     // accepted() or refused().
     [[nodiscard]] quint64 send(const AmqpMessage &message);
+    // Sends an answer to `address` (a request's reply-to) while connected; dropped otherwise.
+    void reply(const QString &address, const AmqpMessage &message);
 
     [[nodiscard]] State state() const { return m_state; }
     // "amqp://host:port" or "amqps://host:port", for messages.
@@ -69,6 +81,7 @@ Q_SIGNALS:
     void problem(const QString &text);
     void accepted(quint64 tag);
     void refused(quint64 tag, const QString &reason);
+    void requestReceived(const tipscope::cfx::AmqpRequest &request);
 
 private:
     class Engine;

@@ -63,6 +63,14 @@ struct AmqpMessage {
     QMap<QString, QString> applicationProperties;
 };
 
+// A message taken from an endpoint's request queue, as it came.
+struct AmqpRequest {
+    QByteArray body;
+    QString contentEncoding;
+    QString messageId;
+    QString replyTo;
+};
+
 [[nodiscard]] AmqpMessage toAmqpMessage(const Envelope &envelope, Codec codec);
 // The envelope inside a received body, unpacked first when its encoding is "gzip".
 [[nodiscard]] protocol::Outcome<Envelope> envelopeFromAmqp(const QByteArray &body,

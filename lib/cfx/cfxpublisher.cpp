@@ -1,15 +1,18 @@
 #include "cfxpublisher.h"
 
 #include <QJsonValue>
+#include <QLoggingCategory>
+
+Q_LOGGING_CATEGORY(lcCfxPublisher, "tipscope.cfx.publisher")
 
 namespace tipscope::cfx {
 
 CfxPublisher::CfxPublisher(journal::Journal &journal, const CfxSettings &settings,
-                           CfxForwarder::HandleOf handleOf, Handles handles,
+                           CfxForwarder::HandleOf handleOf, Endpoints endpoints,
                            CfxForwarder::BoardStations boardStations, QObject *parent)
     : QObject(parent)
     , m_settings(settings)
-    , m_handles(std::move(handles))
+    , m_endpoints(std::move(endpoints))
     , m_forwarder(journal, m_sender, std::move(handleOf), settings.codec,
                   std::move(boardStations)) {
     m_heartbeat.setInterval(settings.heartbeatS * 1000);
@@ -21,6 +24,7 @@ CfxPublisher::CfxPublisher(journal::Journal &journal, const CfxSettings &setting
         });
     });
     connect(&m_sender, &AmqpSender::connected, this, &CfxPublisher::stationsChanged);
+    connect(&m_sender, &AmqpSender::requestReceived, this, &CfxPublisher::answer);
     connect(&m_sender, &AmqpSender::connected, this, [this] {
         for (auto &[station, watched] : m_watched)
             tellState(watched, std::nullopt);
@@ -45,6 +49,7 @@ void CfxPublisher::start() {
     s.user = m_settings.username;
     s.password = m_settings.password;
     s.address = m_settings.address;
+    s.requestAddress = m_settings.requestAddress;
     s.retryMaxMs = m_settings.retryMaxS * 1000;
     m_sender.start(s);
     m_heartbeat.start();
@@ -55,7 +60,7 @@ void CfxPublisher::stop(int timeoutMs) {
         return;
     m_stopping = true;
     m_heartbeat.stop();
-    for (const QString &handle : m_handles())
+    for (const QString &handle : handles())
         if (const quint64 tag = sendNow(handle, endpointShuttingDown(handle)))
             m_goodbyes.insert(tag);
     if (m_goodbyes.isEmpty())
@@ -66,9 +71,10 @@ void CfxPublisher::stop(int timeoutMs) {
 void CfxPublisher::stationsChanged() {
     if (m_sender.state() != AmqpSender::State::Connected || m_stopping)
         return;
-    for (const QString &handle : m_handles())
+    for (const QString &handle : handles())
         if (!m_announced.contains(handle) &&
-            sendNow(handle, endpointConnected(handle, QString(), QString())) != 0)
+            sendNow(handle, endpointConnected(handle, requestPlace().networkUri,
+                                              requestPlace().address)) != 0)
             m_announced.insert(handle);
 }
 
@@ -98,6 +104,31 @@ void CfxPublisher::tellState(Watched &watched, std::optional<qint64> lastedMs) {
         watched.told = now;
 }
 
+QStringList CfxPublisher::handles() const {
+    QStringList all;
+    for (const EndpointIdentity &endpoint : m_endpoints())
+        all.append(endpoint.handle);
+    return all;
+}
+
+RequestPlace CfxPublisher::requestPlace() const {
+    // Without a request queue nobody can ask: the SDK's EndpointConnected then names none.
+    if (m_settings.requestAddress.isEmpty())
+        return {};
+    return {m_sender.where(), m_settings.requestAddress};
+}
+
+void CfxPublisher::answer(const AmqpRequest &request) {
+    if (m_stopping)
+        return;
+    const auto answer = answerRequest(request, m_endpoints(), requestPlace());
+    if (!answer) {
+        qCWarning(lcCfxPublisher, "%s", qPrintable(answer.error()));
+        return;
+    }
+    m_sender.reply(answer->address, answer->message);
+}
+
 void CfxPublisher::finishStop() {
     m_stopTimer.stop();
     m_goodbyes.clear();
@@ -106,7 +137,7 @@ void CfxPublisher::finishStop() {
 }
 
 void CfxPublisher::sendToEach(const std::function<Message(const QString &handle)> &make) {
-    for (const QString &handle : m_handles())
+    for (const QString &handle : handles())
         (void)sendNow(handle, make(handle));
 }
 

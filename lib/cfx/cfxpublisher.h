@@ -7,16 +7,18 @@
 // stationstate.h), and EndpointShuttingDown on stop(). A change while the broker is away is said
 // once it is back, from the state the broker last heard to the present one, its duration unknown.
 //
-// The stations are named by handles() (asked anew each time, so stations found later are
-// included) and the journal's records by handleOf(); boardStations() says which stations work on
-// the board the shared work context names (the forwarder's per-board messages). All three come
-// from the front end, which knows the workspace. stop() sends the goodbyes, waits for the broker to
-// accept them (at most `timeoutMs`) and emits stopped(). The journal must outlive the publisher.
+// The endpoints are named by endpoints() (asked anew each time, so stations found later are
+// included); with a request address they also answer requests (cfxrequests.h) and the journal's
+// records by handleOf(); boardStations() says which stations work on the board the shared work
+// context names (the forwarder's per-board messages). All three come from the front end, which
+// knows the workspace. stop() sends the goodbyes, waits for the broker to accept them (at most
+// `timeoutMs`) and emits stopped(). The journal must outlive the publisher.
 #pragma once
 
 #include "amqpsender.h"
 #include "cfxforwarder.h"
 #include "cfxmessages.h"
+#include "cfxrequests.h"
 #include "cfxsettings.h"
 #include "stationstate.h"
 
@@ -32,10 +34,10 @@ namespace tipscope::cfx {
 class CfxPublisher : public QObject {
     Q_OBJECT
 public:
-    using Handles = std::function<QStringList()>;
+    using Endpoints = std::function<QList<EndpointIdentity>()>;
 
     CfxPublisher(journal::Journal &journal, const CfxSettings &settings,
-                 CfxForwarder::HandleOf handleOf, Handles handles,
+                 CfxForwarder::HandleOf handleOf, Endpoints endpoints,
                  CfxForwarder::BoardStations boardStations = {}, QObject *parent = nullptr);
 
     void start();
@@ -65,7 +67,11 @@ private:
     void tellState(Watched &watched, std::optional<qint64> lastedMs);
 
     CfxSettings m_settings;
-    Handles m_handles;
+    [[nodiscard]] QStringList handles() const;
+    [[nodiscard]] RequestPlace requestPlace() const;
+    void answer(const AmqpRequest &request);
+
+    Endpoints m_endpoints;
     AmqpSender m_sender;
     CfxForwarder m_forwarder;
     QTimer m_heartbeat;

@@ -20,6 +20,8 @@ struct CfxSettings {
     QString username; // empty: anonymous
     QByteArray password;
     QString address = QStringLiteral("/exchange/amq.topic"); // RabbitMQ's form, with its slash
+    // Where requests to the endpoints arrive (a queue of the broker's); empty: none are served.
+    QString requestAddress;
     Codec codec = Codec::Gzip; // the SDK's endpoint compresses by default
     int heartbeatS = 60;       // CFX asks for one at least every 5 minutes
     int retryMaxS = 60;

@@ -174,6 +174,7 @@ std::optional<cfx::CfxSettings> readCfx(Reader &top, const QString &folder, QStr
     r.text("host", s.host);
     r.number("port", s.port, 1, 65535);
     r.text("address", s.address);
+    r.text("request_address", s.requestAddress);
     r.text("username", s.username);
     r.text("password_file", secret.file);
     r.text("password_env", secret.env);
@@ -197,6 +198,11 @@ std::optional<cfx::CfxSettings> readCfx(Reader &top, const QString &folder, QStr
         r.fail(AgentConfigTr::tr("cfx.address must be /exchange/NAME, /exchange/NAME/KEY or "
                                  "/queue/NAME, not \"%1\"")
                    .arg(s.address.left(80)));
+    // Requests are taken from a queue: an exchange keeps nothing for a reader to take.
+    if (!s.requestAddress.isEmpty() && (!s.requestAddress.startsWith(QLatin1String("/queue/")) ||
+                                        !isBrokerAddress(s.requestAddress)))
+        r.fail(AgentConfigTr::tr("cfx.request_address must be a queue, /queue/NAME, not \"%1\"")
+                   .arg(s.requestAddress.left(80)));
     if (s.vendor.trimmed().isEmpty() || s.vendor.size() > AgentConfig::kMaxSiteChars)
         r.fail(AgentConfigTr::tr("cfx.vendor must be a name of at most %1 characters")
                    .arg(AgentConfig::kMaxSiteChars));

@@ -4,6 +4,7 @@
 #ifdef TIPSCOPE_WITH_CFX
 #include "cfx/cfxmessages.h"
 #include "cfx/cfxpublisher.h"
+#include "journal/jointexport.h"
 #include "model/stationmodel.h"
 #endif
 
@@ -95,7 +96,7 @@ void PlantAgent::startCfx() {
     m_cfx = std::make_unique<cfx::CfxPublisher>(
         m_lines.journal(), *m_config.cfx,
         [this](const model::DeviceIdentity &device) { return cfxHandleOf(device); },
-        [this] { return cfxHandles(); }, [this] { return boardStations(); });
+        [this] { return cfxEndpoints(); }, [this] { return boardStations(); });
     connect(m_cfx.get(), &cfx::CfxPublisher::stopped, this, [this] {
         m_cfx.release()->deleteLater(); // its own signal is still being emitted
         finishIfStopped();
@@ -163,13 +164,18 @@ QList<model::DeviceIdentity> PlantAgent::boardStations() {
     return stations;
 }
 
-QStringList PlantAgent::cfxHandles() {
-    QStringList handles;
+QList<cfx::EndpointIdentity> PlantAgent::cfxEndpoints() {
+    QList<cfx::EndpointIdentity> endpoints;
     model::Workspace &workspace = m_lines.workspace();
     for (int i = 0; i < workspace.count(); ++i)
-        for (const model::DeviceModel *device : workspace.session(i)->devices())
-            handles.append(cfxHandleOf(device->identity()));
-    return handles;
+        for (const model::DeviceModel *device : workspace.session(i)->devices()) {
+            const model::DeviceIdentity identity = device->identity();
+            endpoints.append({cfxHandleOf(identity), m_config.cfx->vendor, identity.model,
+                              QStringLiteral("%1 %2").arg(workspace.line(i).name,
+                                                          journal::addressText(identity)),
+                              identity.softwareVersion});
+        }
+    return endpoints;
 }
 #else
 void PlantAgent::startCfx() {

@@ -30,7 +30,8 @@
 
 namespace tipscope::cfx {
 class CfxPublisher;
-}
+struct EndpointIdentity;
+} // namespace tipscope::cfx
 #include <vector>
 
 namespace tipscope::plant {
@@ -72,7 +73,7 @@ private:
     // A station's CFX handle: vendor, model, and the workspace line's name with its address
     // (TipScope does not read a station's serial number today).
     [[nodiscard]] QString cfxHandleOf(const model::DeviceIdentity &device);
-    [[nodiscard]] QStringList cfxHandles();
+    [[nodiscard]] QList<cfx::EndpointIdentity> cfxEndpoints();
     [[nodiscard]] QList<model::DeviceIdentity> boardStations();
     void finishIfStopped();
 

@@ -11,6 +11,7 @@ import json
 import sys
 import uuid
 
+from proton import Message
 from proton.handlers import MessagingHandler
 from proton.reactor import Container
 
@@ -179,14 +180,74 @@ class Consumer(MessagingHandler):
         print("BAD: transport %s" % event.transport.condition, flush=True)
 
 
+class Requester(Consumer):
+    """Asks an endpoint as an SDK requester would: each request an envelope with a RequestID, sent
+    to the endpoint's request queue with --source as its reply-to; the answers are received and
+    printed as messages are, each checked to answer its request."""
+
+    def __init__(self, url, source, count, timeout, names, target, send_to, compress):
+        super().__init__(url, source, count, timeout)
+        self.names, self.target, self.send_to, self.compress = names, target, send_to, compress
+        self.sent = False
+        self.asked = {}  # RequestID -> the request's AMQP message-id
+
+    def on_link_opened(self, event):
+        super().on_link_opened(event)
+        if event.receiver:
+            event.container.create_sender(event.connection, self.send_to)
+
+    def on_sendable(self, event):
+        if self.sent:
+            return
+        self.sent = True
+        for i, name in enumerate(self.names):
+            request_id = "REQUEST-%s" % uuid.uuid4()
+            envelope = {"MessageName": name, "Version": "2.1",
+                        "TimeStamp": "2026-12-06T12:00:00.000Z", "UniqueID": str(uuid.uuid4()),
+                        "Source": "MES.Test.1", "Target": self.target, "RequestID": request_id,
+                        "MessageBody": {"$type": name + ", CFX", "CFXHandle": self.target}}
+            raw = json.dumps(envelope).encode("utf-8")
+            message = Message(body=gzip.compress(raw) if self.compress else raw,
+                              id="request-%d" % i, reply_to=self.source,
+                              content_type='application/json; charset="utf-8"',
+                              subject="MES.Test.1." + name)
+            message.inferred = True  # one Data section, as the SDK sends
+            if self.compress:
+                message.content_encoding = "gzip"
+            self.asked[request_id] = message.id
+            event.sender.send(message)
+
+    def on_message(self, event):
+        message = event.message
+        raw = message.body.tobytes() if isinstance(message.body, memoryview) else message.body
+        envelope = json.loads(raw.decode("utf-8"))
+        asked = self.asked.get(envelope.get("RequestID"))
+        if asked is None:
+            print("BAD: an answer to no request: %r" % envelope.get("RequestID"), flush=True)
+        elif str(message.correlation_id) != asked:
+            print("BAD: correlation-id %r for %r" % (message.correlation_id, asked), flush=True)
+        if envelope.get("Target") != "MES.Test.1" or message.address not in (None, "MES.Test.1"):
+            print("BAD: answered to %r" % envelope.get("Target"), flush=True)
+        super().on_message(event)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--url", required=True)
     parser.add_argument("--source", required=True)
     parser.add_argument("--count", type=int, required=True)
     parser.add_argument("--timeout", type=float, default=60)
+    parser.add_argument("--request", action="append", default=[],
+                        help="ask this (a CFX request's name) of --target, at --send-to")
+    parser.add_argument("--target")
+    parser.add_argument("--send-to")
+    parser.add_argument("--gzip", action="store_true")
     args = parser.parse_args()
-    consumer = Consumer(args.url, args.source, args.count, args.timeout)
+    if args.request:
+        consumer = Requester(args.url, args.source, args.count, args.timeout, args.request,
+                             args.target, args.send_to, args.gzip)
+    else:
+        consumer = Consumer(args.url, args.source, args.count, args.timeout)
     try:
         Container(consumer).run()
     except Exception as error:  # said as a complaint, so the test shows it

@@ -31,14 +31,16 @@ public:
         }
     }
 
-    // Listens on `source` for `count` messages; true once the link is attached.
-    bool start(const QString &url, const QString &source, int count) {
+    // Listens on `source` for `count` messages; true once the link is attached. `more`: the
+    // consumer's other options (a requester's --request, --target, --send-to).
+    bool start(const QString &url, const QString &source, int count, const QStringList &more = {}) {
         m_process.setProcessChannelMode(QProcess::MergedChannels);
         m_process.start(QStringLiteral("/usr/bin/python3"),
-                        {QStringLiteral(CFX_CONSUMER), QStringLiteral("--url"), url,
-                         QStringLiteral("--source"), source, QStringLiteral("--count"),
-                         QString::number(count), QStringLiteral("--timeout"),
-                         QStringLiteral("100")});
+                        QStringList{QStringLiteral(CFX_CONSUMER), QStringLiteral("--url"), url,
+                                    QStringLiteral("--source"), source, QStringLiteral("--count"),
+                                    QString::number(count), QStringLiteral("--timeout"),
+                                    QStringLiteral("100")} +
+                            more);
         return QTest::qWaitFor([this] { return read(), m_ready; }, 30000);
     }
 

@@ -3,7 +3,7 @@
 // the broker takes it, and says goodbye when the agent is stopped cleanly; its MQTT broker being
 // absent changes nothing for CFX, and an agent that publishes CFX only ("broker": false) does the
 // same without ever trying MQTT. A board named in the work context is a CFX transaction, and a
-// station's changes of state are said as they happen.
+// station's changes of state are said as they happen, and requests on its queue are answered.
 #include "agentprocess.h"
 #include "cfxtesting.h"
 
@@ -232,6 +232,79 @@ private Q_SLOTS:
         QCOMPARE(stateOf(messages.at(failed), QStringLiteral("OldState")).toString(),
                  QStringLiteral("1100"));
         QVERIFY(stateOf(messages.at(failed), QStringLiteral("OldStateDuration")).isString());
+    }
+
+    // An MES asks the station's endpoint on the agent's request queue, as the SDK's requesters
+    // do (the answers go to the requester's own queue, tied to each request): AreYouThere and
+    // GetEndpointInformation are answered, anything else is "not supported".
+    void requestsOnTheQueueAreAnswered() {
+        const QString requests = QStringLiteral("/queue/tipscope-cfx-requests");
+        CfxConsumer hello;
+        QVERIFY2(hello.start(m_broker->url(),
+                             QStringLiteral("/exchange/amq.topic/#.CFX.EndpointConnected"), 2),
+                 qPrintable(hello.output()));
+        AgentProcess agent;
+        QJsonObject cfx = cfxSection();
+        cfx.insert(QStringLiteral("request_address"), requests);
+        agent.configure(QStringLiteral("demo"), 1, {},
+                        {{QStringLiteral("cfx"), cfx}, {QStringLiteral("broker"), false}});
+        QString error;
+        QVERIFY2(agent.start(&error), qPrintable(error));
+        QVERIFY2(hello.finish(), qPrintable(hello.output() + agent.log()));
+        const QJsonObject connected = hello.messages()
+                                          .at(0)
+                                          .value(QStringLiteral("envelope"))
+                                          .toObject()
+                                          .value(QStringLiteral("MessageBody"))
+                                          .toObject();
+        // Where to ask is said when the endpoint connects.
+        QCOMPARE(connected.value(QStringLiteral("RequestTargetAddress")).toString(), requests);
+        QVERIFY(connected.value(QStringLiteral("RequestNetworkUri"))
+                    .toString()
+                    .startsWith(QLatin1String("amqp://")));
+        const QString handle = connected.value(QStringLiteral("CFXHandle")).toString();
+
+        CfxConsumer requester;
+        QVERIFY2(
+            requester.start(m_broker->url(), QStringLiteral("/queue/tipscope-cfx-answers"), 3,
+                            {QStringLiteral("--request"), QStringLiteral("CFX.AreYouThereRequest"),
+                             QStringLiteral("--request"),
+                             QStringLiteral("CFX.GetEndpointInformationRequest"),
+                             QStringLiteral("--request"),
+                             QStringLiteral("CFX.Production.GetActiveRecipeRequest"),
+                             QStringLiteral("--target"), handle, QStringLiteral("--send-to"),
+                             requests, QStringLiteral("--gzip")}),
+            qPrintable(requester.output()));
+        QVERIFY2(requester.finish(), qPrintable(requester.output() + agent.log()));
+        QCOMPARE(agent.stop(), 0);
+        QVERIFY2(requester.complaints().isEmpty(), qPrintable(requester.complaints().join('\n')));
+        QMap<QString, QJsonObject> answers;
+        for (const QJsonObject &m : requester.messages()) {
+            const QJsonObject envelope = m.value(QStringLiteral("envelope")).toObject();
+            QCOMPARE(envelope.value(QStringLiteral("Source")).toString(), handle);
+            answers.insert(envelope.value(QStringLiteral("MessageName")).toString(),
+                           envelope.value(QStringLiteral("MessageBody")).toObject());
+        }
+        QCOMPARE(answers.keys(), (QStringList{QStringLiteral("CFX.AreYouThereResponse"),
+                                              QStringLiteral("CFX.GetEndpointInformationResponse"),
+                                              QStringLiteral("CFX.NotSupportedResponse")}));
+        QCOMPARE(answers.value(QStringLiteral("CFX.AreYouThereResponse"))
+                     .value(QStringLiteral("CFXHandle"))
+                     .toString(),
+                 handle);
+        const QJsonObject information =
+            answers.value(QStringLiteral("CFX.GetEndpointInformationResponse"))
+                .value(QStringLiteral("EndpointInformation"))
+                .toObject();
+        QCOMPARE(information.value(QStringLiteral("CFXHandle")).toString(), handle);
+        QCOMPARE(information.value(QStringLiteral("Vendor")).toString(), QStringLiteral("JBC"));
+        QCOMPARE(information.value(QStringLiteral("RequestTargetAddress")).toString(), requests);
+        QCOMPARE(answers.value(QStringLiteral("CFX.NotSupportedResponse"))
+                     .value(QStringLiteral("RequestResult"))
+                     .toObject()
+                     .value(QStringLiteral("Result"))
+                     .toString(),
+                 QStringLiteral("Failed"));
     }
 };
 

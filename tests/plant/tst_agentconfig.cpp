@@ -88,7 +88,7 @@ private Q_SLOTS:
         const auto c = load(R"({"format": "tipscope-agent", "version": 1,
             "workspace": "lines.json",
             "cfx": {"host": "mes.plant", "port": 5671, "address": "/exchange/cfx/line7",
-                    "username": "cfx", "password_file": "secret", "gzip": false,
+                    "request_address": "/queue/line7-requests", "username": "cfx", "password_file": "secret", "gzip": false,
                     "heartbeat_s": 30, "retry_max_s": 20, "vendor": "JBC",
                     "tls": {"enabled": true, "ca_file": "ca.pem"}}})");
         QVERIFY2(c, qPrintable(c.error()));
@@ -96,6 +96,7 @@ private Q_SLOTS:
         QCOMPARE(c->cfx->host, QStringLiteral("mes.plant"));
         QCOMPARE(c->cfx->port, 5671);
         QCOMPARE(c->cfx->address, QStringLiteral("/exchange/cfx/line7"));
+        QCOMPARE(c->cfx->requestAddress, QStringLiteral("/queue/line7-requests"));
         QCOMPARE(c->cfx->password, QByteArray("s3cret"));
         QVERIFY(!c->cfxPasswordSource.contains(QLatin1String("s3cret")));
         QVERIFY(c->cfx->codec == tipscope::cfx::Codec::Raw);
@@ -182,6 +183,9 @@ private Q_SLOTS:
         QTest::newRow("cfx address without its slash")
             << cfx + R"({"host": "h", "address": "exchange/cfx"}})"
             << "cfx.address";
+        QTest::newRow("cfx requests from an exchange, which keeps none")
+            << cfx + R"({"host": "h", "request_address": "/exchange/amq.topic"}})"
+            << "cfx.request_address";
         QTest::newRow("cfx heartbeat beyond five minutes")
             << cfx + R"({"host": "h", "heartbeat_s": 301}})"
             << "cfx.heartbeat_s";
