@@ -27,142 +27,142 @@
 <context>
     <name>AgentConfig</name>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="39"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="38"/>
         <source>%1 must be text</source>
         <translation>%1 muss ein Text sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="48"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 muss eine ganze Zahl von %2 bis %3 sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="59"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="58"/>
         <source>%1 must be true or false</source>
         <translation>%1 muss true oder false sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="65"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="64"/>
         <source>%1 must be an object</source>
         <translation>%1 muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="83"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="82"/>
         <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>keine Konfiguration des TipScope-Agenten (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="88"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="87"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="91"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="90"/>
         <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
         <translation>für ein neueres TipScope geschrieben (Version %1); dieses liest Version %2 und ältere</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="119"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="118"/>
         <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
         <translation>broker.protocol muss &quot;3.1.1&quot; oder &quot;5&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="131"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="130"/>
         <source>broker.host must name the broker</source>
         <translation>broker.host muss den Broker nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="134"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="133"/>
         <source>broker.password_file and broker.password_env: give one of them</source>
         <translation>broker.password_file und broker.password_env: nur eines von beiden angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="149"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="148"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="155"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="154"/>
         <source>environment variable %1</source>
         <translation>Umgebungsvariable %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="196"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="188"/>
         <source>cfx.host must name the AMQP broker</source>
         <translation>cfx.host muss den AMQP-Broker nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="198"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="190"/>
         <source>cfx.address must be /exchange/NAME, /exchange/NAME/KEY or /queue/NAME, not &quot;%1&quot;</source>
         <translation>cfx.address muss /exchange/NAME, /exchange/NAME/KEY oder /queue/NAME sein, nicht „%1“</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="204"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
         <source>cfx.request_address must be a queue, /queue/NAME, not &quot;%1&quot;</source>
         <translation>cfx.request_address muss eine Warteschlange sein, /queue/NAME, nicht „%1“</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="207"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
         <source>cfx.vendor must be a name of at most %1 characters</source>
         <translation>cfx.vendor muss ein Name mit höchstens %1 Zeichen sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="210"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="200"/>
         <source>cfx.tls.cert_file and cfx.tls.key_file: give both or neither</source>
         <translation>cfx.tls.cert_file und cfx.tls.key_file: beide oder keines angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="212"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="202"/>
         <source>cfx.password_file and cfx.password_env: give one of them</source>
         <translation>cfx.password_file und cfx.password_env: nur eines von beiden angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="230"/>
         <source>broker is false: then a cfx section must say where the lines are published</source>
         <translation>broker ist false: dann muss ein cfx-Abschnitt sagen, wohin die Linien veröffentlicht werden</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="243"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="233"/>
         <source>site must name the site</source>
         <translation>site muss den Standort nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="245"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="235"/>
         <source>site must be at most %1 characters long, not %2</source>
         <translation>site darf höchstens %1 Zeichen lang sein, nicht %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="250"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
         <source>site must not hold control characters</source>
         <translation>site darf keine Steuerzeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="252"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="242"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace muss die Arbeitsbereichsdatei der zu betreibenden Linien nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="281"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="271"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="284"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="274"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="288"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>die Konfiguration %1 ist zu groß, um eine zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="290"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="280"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>die Konfiguration %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="292"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="282"/>
         <source>it is a list</source>
         <translation>es ist eine Liste</translation>
     </message>
@@ -2369,47 +2369,54 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="44"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="46"/>
         <source>--cfx takes the AMQP broker as amqp://HOST:PORT or amqps://HOST:PORT (the user with --cfx-user, the password from %1)</source>
         <translation>--cfx erwartet den AMQP-Broker als amqp://HOST:PORT oder amqps://HOST:PORT (den Benutzer mit --cfx-user, das Passwort aus %1)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="56"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="58"/>
         <source>--cfx-address takes RabbitMQ&apos;s form: /exchange/NAME, /exchange/NAME/KEY or /queue/NAME</source>
         <translation>--cfx-address erwartet die Form von RabbitMQ: /exchange/NAME, /exchange/NAME/KEY oder /queue/NAME</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="64"/>
+        <source>--cfx-requests takes a queue of the broker: /queue/NAME</source>
+        <translation>--cfx-requests erwartet eine Warteschlange des Brokers: /queue/NAME</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="82"/>
         <source>--mqtt takes the broker as HOST:PORT</source>
         <translation>--mqtt erwartet den Broker als HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="85"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="94"/>
         <source>--site takes the site&apos;s name</source>
         <translation>--site erwartet den Namen des Standorts</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="91"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="100"/>
         <source>--interval takes milliseconds from 100 to 3600000</source>
         <translation>--interval erwartet Millisekunden von 100 bis 3600000</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="122"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="130"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="156"/>
         <source>Broker connected.</source>
         <translation>Broker verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="124"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="132"/>
         <source>Broker disconnected.</source>
         <translation>Broker getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="126"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="134"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="157"/>
         <source>Connecting to the broker.</source>
         <translation>Verbindung zum Broker wird aufgebaut.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="128"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="136"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n Gerät, %1 Live-Nachrichten, %2 Lötstellen und Ereignisse weitergeleitet, %3 wartend. %4</numerusform>
@@ -2417,12 +2424,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="146"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="153"/>
+        <source>CFX: %1 messages from the journal accepted, %2 waiting. %3</source>
+        <translation>CFX: %1 Nachrichten aus dem Journal angenommen, %2 warten. %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="184"/>
         <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
         <translation>tipscope-cli: %1 ist nicht gesetzt: Verbindung als %2 ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="154"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="192"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
@@ -2430,7 +2442,67 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="84"/>
+        <location filename="../app/cli/clioptions.cpp" line="164"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="208"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="214"/>
+        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
+        <translation>--workspace erwartet eine Datei, und nur eines von --port, --tcp, --demo, --workspace</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="221"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="229"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="234"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud erwartet eine Baudrate wie 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="241"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity erwartet none, even oder odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="245"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits erwartet 1 oder 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="254"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="262"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="265"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="193"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 braucht einen Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="85"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |
                      --workspace FILE] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -2450,9 +2522,10 @@ Commands:
   monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]
                             publish the lines to an MQTT broker as tipscope-agent does
                             (docs/mqtt.md); the password from TIPSCOPE_MQTT_PASSWORD
-          [--cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADDRESS]]
-                            and every station as an IPC-CFX endpoint (docs/cfx.md);
-                            the password from TIPSCOPE_CFX_PASSWORD
+  monitor --cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADDRESS]
+          [--cfx-requests /queue/NAME]
+                            every station as an IPC-CFX endpoint (docs/cfx.md), beside
+                            --mqtt or alone; the password from TIPSCOPE_CFX_PASSWORD
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
   profile save FILE         every writable setting of the device to a JSON profile
@@ -2514,9 +2587,10 @@ Befehle:
   monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]
                             veröffentlicht die Linien an einen MQTT-Broker wie
                             tipscope-agent (docs/mqtt.md); Passwort aus TIPSCOPE_MQTT_PASSWORD
-          [--cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADRESSE]]
-                            und jede Station als IPC-CFX-Endpunkt (docs/cfx.md);
-                            Passwort aus TIPSCOPE_CFX_PASSWORD
+  monitor --cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADRESSE]
+          [--cfx-requests /queue/NAME]
+                            jede Station als IPC-CFX-Endpunkt (docs/cfx.md), neben
+                            --mqtt oder allein; Passwort aus TIPSCOPE_CFX_PASSWORD
   dump [--json]             alle lesbaren Parameter, Zähler und Fehler
   commands [--family F]     der Befehlskatalog
   profile save DATEI        alle beschreibbaren Einstellungen des Geräts in ein JSON-Profil
@@ -2564,97 +2638,37 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="162"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>unbekannter Befehl &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="206"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="212"/>
-        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
-        <translation>--workspace erwartet eine Datei, und nur eines von --port, --tcp, --demo, --workspace</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="219"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="227"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="232"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud erwartet eine Baudrate wie 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="239"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity erwartet none, even oder odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="243"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits erwartet 1 oder 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="252"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="260"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="263"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="191"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 braucht einen Wert</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="195"/>
+        <location filename="../app/cli/clioptions.cpp" line="197"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="267"/>
+        <location filename="../app/cli/clioptions.cpp" line="269"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="268"/>
+        <location filename="../app/cli/clioptions.cpp" line="270"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="274"/>
+        <location filename="../app/cli/clioptions.cpp" line="276"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="277"/>
+        <location filename="../app/cli/clioptions.cpp" line="279"/>
         <source>--workspace runs detect, monitor, dump or joints, not %1</source>
         <translation>--workspace führt detect, monitor, dump oder joints aus, nicht %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="280"/>
+        <location filename="../app/cli/clioptions.cpp" line="282"/>
         <source>--csv-one-file goes with --workspace and --csv FILE</source>
         <translation>--csv-one-file gehört zu --workspace und --csv DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="283"/>
+        <location filename="../app/cli/clioptions.cpp" line="285"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>

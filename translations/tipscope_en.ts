@@ -34,7 +34,7 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="128"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="136"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n device, %1 live messages, %2 joints and events forwarded, %3 waiting. %4</numerusform>

@@ -27,142 +27,142 @@
 <context>
     <name>AgentConfig</name>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="39"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="38"/>
         <source>%1 must be text</source>
         <translation>%1 debe ser un texto</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="48"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 debe ser un número entero de %2 a %3</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="59"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="58"/>
         <source>%1 must be true or false</source>
         <translation>%1 debe ser true o false</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="65"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="64"/>
         <source>%1 must be an object</source>
         <translation>%1 debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="83"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="82"/>
         <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>no es una configuración del agente de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="88"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="87"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="91"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="90"/>
         <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
         <translation>escrita para un TipScope más reciente (versión %1); este lee la versión %2 y anteriores</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="119"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="118"/>
         <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
         <translation>broker.protocol debe ser &quot;3.1.1&quot; o &quot;5&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="131"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="130"/>
         <source>broker.host must name the broker</source>
         <translation>broker.host debe indicar el broker</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="134"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="133"/>
         <source>broker.password_file and broker.password_env: give one of them</source>
         <translation>broker.password_file y broker.password_env: indique solo uno de los dos</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="149"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="148"/>
         <source>file %1</source>
         <translation>archivo %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="155"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="154"/>
         <source>environment variable %1</source>
         <translation>variable de entorno %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="196"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="188"/>
         <source>cfx.host must name the AMQP broker</source>
         <translation>cfx.host debe nombrar el broker AMQP</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="198"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="190"/>
         <source>cfx.address must be /exchange/NAME, /exchange/NAME/KEY or /queue/NAME, not &quot;%1&quot;</source>
         <translation>cfx.address debe ser /exchange/NOMBRE, /exchange/NOMBRE/CLAVE o /queue/NOMBRE, no «%1»</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="204"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
         <source>cfx.request_address must be a queue, /queue/NAME, not &quot;%1&quot;</source>
         <translation>cfx.request_address debe ser una cola, /queue/NOMBRE, no «%1»</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="207"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
         <source>cfx.vendor must be a name of at most %1 characters</source>
         <translation>cfx.vendor debe ser un nombre de %1 caracteres como máximo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="210"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="200"/>
         <source>cfx.tls.cert_file and cfx.tls.key_file: give both or neither</source>
         <translation>cfx.tls.cert_file y cfx.tls.key_file: indique los dos o ninguno</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="212"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="202"/>
         <source>cfx.password_file and cfx.password_env: give one of them</source>
         <translation>cfx.password_file y cfx.password_env: indique solo uno de ellos</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="230"/>
         <source>broker is false: then a cfx section must say where the lines are published</source>
         <translation>broker es false: entonces una sección cfx debe indicar dónde se publican las líneas</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="243"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="233"/>
         <source>site must name the site</source>
         <translation>site debe indicar la planta</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="245"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="235"/>
         <source>site must be at most %1 characters long, not %2</source>
         <translation>site admite como máximo %1 caracteres, no %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="250"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
         <source>site must not hold control characters</source>
         <translation>site no puede contener caracteres de control</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="252"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="242"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace debe indicar el archivo de espacio de trabajo de las líneas que se ejecutan</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="281"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="271"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>no se puede leer la configuración %1: no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="284"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="274"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>no se puede leer la configuración %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="288"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>la configuración %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="290"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="280"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>la configuración %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="292"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="282"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -2369,47 +2369,54 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="44"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="46"/>
         <source>--cfx takes the AMQP broker as amqp://HOST:PORT or amqps://HOST:PORT (the user with --cfx-user, the password from %1)</source>
         <translation>--cfx espera el broker AMQP como amqp://HOST:PUERTO o amqps://HOST:PUERTO (el usuario con --cfx-user, la contraseña de %1)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="56"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="58"/>
         <source>--cfx-address takes RabbitMQ&apos;s form: /exchange/NAME, /exchange/NAME/KEY or /queue/NAME</source>
         <translation>--cfx-address espera la forma de RabbitMQ: /exchange/NOMBRE, /exchange/NOMBRE/CLAVE o /queue/NOMBRE</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="64"/>
+        <source>--cfx-requests takes a queue of the broker: /queue/NAME</source>
+        <translation>--cfx-requests espera una cola del broker: /queue/NOMBRE</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="82"/>
         <source>--mqtt takes the broker as HOST:PORT</source>
         <translation>--mqtt espera el broker como HOST:PUERTO</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="85"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="94"/>
         <source>--site takes the site&apos;s name</source>
         <translation>--site espera el nombre de la planta</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="91"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="100"/>
         <source>--interval takes milliseconds from 100 to 3600000</source>
         <translation>--interval espera milisegundos de 100 a 3600000</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="122"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="130"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="156"/>
         <source>Broker connected.</source>
         <translation>Broker conectado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="124"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="132"/>
         <source>Broker disconnected.</source>
         <translation>Broker desconectado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="126"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="134"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="157"/>
         <source>Connecting to the broker.</source>
         <translation>Conectando con el broker.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="128"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="136"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n dispositivo, %1 mensajes en vivo, %2 soldaduras y eventos reenviados, %3 en espera. %4</numerusform>
@@ -2417,12 +2424,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="146"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="153"/>
+        <source>CFX: %1 messages from the journal accepted, %2 waiting. %3</source>
+        <translation>CFX: %1 mensajes del diario aceptados, %2 en espera. %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="184"/>
         <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
         <translation>tipscope-cli: %1 no está definida: se conecta como %2 sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="154"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="192"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration espera segundos</translation>
     </message>
@@ -2430,7 +2442,67 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="84"/>
+        <location filename="../app/cli/clioptions.cpp" line="164"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="208"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>indique solo una de --port, --tcp y --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="214"/>
+        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
+        <translation>--workspace requiere un archivo, y solo uno de --port, --tcp, --demo, --workspace</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="221"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="229"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="234"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud requiere una velocidad como 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="241"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity admite none, even u odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="245"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits admite 1 o 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="254"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="262"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="265"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries requiere un número de 0 a 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="193"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 necesita un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="85"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |
                      --workspace FILE] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -2450,9 +2522,10 @@ Commands:
   monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]
                             publish the lines to an MQTT broker as tipscope-agent does
                             (docs/mqtt.md); the password from TIPSCOPE_MQTT_PASSWORD
-          [--cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADDRESS]]
-                            and every station as an IPC-CFX endpoint (docs/cfx.md);
-                            the password from TIPSCOPE_CFX_PASSWORD
+  monitor --cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADDRESS]
+          [--cfx-requests /queue/NAME]
+                            every station as an IPC-CFX endpoint (docs/cfx.md), beside
+                            --mqtt or alone; the password from TIPSCOPE_CFX_PASSWORD
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
   profile save FILE         every writable setting of the device to a JSON profile
@@ -2514,9 +2587,10 @@ Comandos:
   monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]
                             publica las líneas en un broker MQTT como tipscope-agent
                             (docs/mqtt.md); la contraseña, de TIPSCOPE_MQTT_PASSWORD
-          [--cfx amqp[s]://HOST:PUERTO [--cfx-user U] [--cfx-address DIRECCIÓN]]
-                            y cada estación como punto final IPC-CFX (docs/cfx.md);
-                            la contraseña, de TIPSCOPE_CFX_PASSWORD
+  monitor --cfx amqp[s]://HOST:PUERTO [--cfx-user U] [--cfx-address DIRECCIÓN]
+          [--cfx-requests /queue/NOMBRE]
+                            cada estación como punto final IPC-CFX (docs/cfx.md), junto
+                            a --mqtt o sola; la contraseña, de TIPSCOPE_CFX_PASSWORD
   dump [--json]             todos los parámetros legibles, contadores y errores
   commands [--family F]     el catálogo de comandos
   profile save ARCHIVO      todos los ajustes escribibles del equipo en un perfil JSON
@@ -2564,97 +2638,37 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="162"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>comando desconocido &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="206"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>indique solo una de --port, --tcp y --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="212"/>
-        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
-        <translation>--workspace requiere un archivo, y solo uno de --port, --tcp, --demo, --workspace</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="219"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="227"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="232"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud requiere una velocidad como 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="239"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity admite none, even u odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="243"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits admite 1 o 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="252"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="260"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="263"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries requiere un número de 0 a 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="191"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 necesita un valor</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="195"/>
+        <location filename="../app/cli/clioptions.cpp" line="197"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="267"/>
+        <location filename="../app/cli/clioptions.cpp" line="269"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="268"/>
+        <location filename="../app/cli/clioptions.cpp" line="270"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="274"/>
+        <location filename="../app/cli/clioptions.cpp" line="276"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="277"/>
+        <location filename="../app/cli/clioptions.cpp" line="279"/>
         <source>--workspace runs detect, monitor, dump or joints, not %1</source>
         <translation>--workspace ejecuta detect, monitor, dump o joints, no %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="280"/>
+        <location filename="../app/cli/clioptions.cpp" line="282"/>
         <source>--csv-one-file goes with --workspace and --csv FILE</source>
         <translation>--csv-one-file va con --workspace y --csv ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="283"/>
+        <location filename="../app/cli/clioptions.cpp" line="285"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>

@@ -31,8 +31,8 @@ int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err);
 [[nodiscard]] model::WorkspaceLine workspaceLineOf(const CliOptions &o);
 // monitor: the line (or a workspace's lines) through the line service, printed and written.
 int runMonitor(const CliOptions &o, QTextStream &out, QTextStream &err);
-// monitor --mqtt: the lines (one, or a workspace's) published as tipscope-agent does.
-int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err);
+// monitor --mqtt and/or --cfx: the lines (one, or a workspace's) published as the agent does.
+int runMonitorPlant(const CliOptions &o, QTextStream &out, QTextStream &err);
 // Their own session (record) or none (measure): recordings, as the Charts page writes them.
 int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err);

@@ -1,10 +1,9 @@
-// tipscope-cli monitor --mqtt HOST:PORT: a quick trial of the plant's MQTT without the service.
-// The line the command line names (or every line of --workspace) runs in a PlantAgent, the same
-// as tipscope-agent's, so the topics and payloads are the agent's (docs/mqtt.md). Every interval
-// a line says where it stands: the broker, the devices, what was published and forwarded. The
-// password comes from the environment (TIPSCOPE_MQTT_PASSWORD), never from an argument. With
-// --cfx the agent also makes every station an IPC-CFX endpoint (docs/cfx.md), its password from
-// TIPSCOPE_CFX_PASSWORD.
+// tipscope-cli monitor --mqtt HOST:PORT and/or --cfx amqp://HOST:PORT: a quick trial of the
+// plant's MQTT and IPC-CFX without the service. The line the command line names (or every line of
+// --workspace) runs in a PlantAgent, the same as tipscope-agent's, so the topics, messages and
+// payloads are the agent's (docs/mqtt.md, docs/cfx.md). Every interval a line says where each
+// stands: the broker, the devices, what was published and forwarded. The passwords come from the
+// environment (TIPSCOPE_MQTT_PASSWORD, TIPSCOPE_CFX_PASSWORD), never from an argument.
 #include "clicommands.h"
 
 #include "link/tcptransport.h"
@@ -12,6 +11,9 @@
 #include "mqtt/mqttsecret.h"
 #include "mqtt/mqtttopic.h"
 #include "plant/plantagent.h"
+#ifdef TIPSCOPE_WITH_CFX
+#include "cfx/cfxpublisher.h"
+#endif
 
 #include <QDateTime>
 #include <QEventLoop>
@@ -52,10 +54,14 @@ protocol::Outcome<cfx::CfxSettings> cfxOf(const CliOptions &o) {
     s.caFile = tls ? QStringLiteral("/etc/ssl/certs/ca-certificates.crt") : QString();
     s.username = o.values.value(QStringLiteral("cfx-user"));
     s.address = o.values.value(QStringLiteral("cfx-address"), s.address);
-    if (!s.address.startsWith(QLatin1Char('/')))
+    if (!cfx::isBrokerAddress(s.address))
         return protocol::failure(CliMonitorMqttTr::tr(
             "--cfx-address takes RabbitMQ's form: /exchange/NAME, /exchange/NAME/KEY or "
             "/queue/NAME"));
+    s.requestAddress = o.values.value(QStringLiteral("cfx-requests"));
+    if (o.values.contains(QStringLiteral("cfx-requests")) && !cfx::isRequestQueue(s.requestAddress))
+        return protocol::failure(
+            CliMonitorMqttTr::tr("--cfx-requests takes a queue of the broker: /queue/NAME"));
     if (!s.username.isEmpty() && qEnvironmentVariableIsSet(kCfxPasswordVariable)) {
         auto password = mqtt::readSecretEnvironment(QLatin1String(kCfxPasswordVariable));
         if (!password)
@@ -69,7 +75,10 @@ protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     plant::AgentConfig c;
     QString host;
     quint16 port = 0;
-    if (!link::TcpTransport::parseHostPort(o.values.value(QStringLiteral("mqtt")), &host, &port))
+    // --cfx alone publishes CFX only, as an agent configuration with "broker": false.
+    c.mqtt = o.values.contains(QStringLiteral("mqtt"));
+    if (c.mqtt &&
+        !link::TcpTransport::parseHostPort(o.values.value(QStringLiteral("mqtt")), &host, &port))
         return protocol::failure(CliMonitorMqttTr::tr("--mqtt takes the broker as HOST:PORT"));
     c.broker.host = host;
     c.broker.port = port;
@@ -111,8 +120,7 @@ protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     return c;
 }
 
-QString standing(const plant::PlantAgent &agent) {
-    const plant::PlantPublisher &p = *agent.publisher();
+QString mqttStanding(const plant::PlantPublisher &p) {
     qint64 live = 0;
     for (const auto &device : p.devices())
         live += device->liveCount();
@@ -134,9 +142,39 @@ QString standing(const plant::PlantAgent &agent) {
         .arg(broker);
 }
 
+QString standing(const plant::PlantAgent &agent) {
+    QStringList parts;
+    if (const plant::PlantPublisher *p = agent.publisher())
+        parts.append(mqttStanding(*p));
+#ifdef TIPSCOPE_WITH_CFX
+    if (cfx::CfxPublisher *c = agent.cfxPublisher()) {
+        const bool up = c->sender().state() == cfx::AmqpSender::State::Connected;
+        parts.append(
+            CliMonitorMqttTr::tr("CFX: %1 messages from the journal accepted, %2 waiting. %3")
+                .arg(c->forwarder().acceptedCount())
+                .arg(c->forwarder().waitingCount())
+                .arg(up ? CliMonitorMqttTr::tr("Broker connected.")
+                        : CliMonitorMqttTr::tr("Connecting to the broker.")));
+    }
+#endif
+    return parts.join(QStringLiteral("  "));
+}
+
+// Whether a broker was ever reached, MQTT's or CFX's: never reached is a transport error.
+void watchConnected(plant::PlantAgent &agent, QObject *context, bool &connected) {
+    if (const plant::PlantPublisher *p = agent.publisher())
+        QObject::connect(p->client(), &mqtt::MqttClient::connected, context,
+                         [&connected] { connected = true; });
+#ifdef TIPSCOPE_WITH_CFX
+    if (cfx::CfxPublisher *c = agent.cfxPublisher())
+        QObject::connect(&c->sender(), &cfx::AmqpSender::connected, context,
+                         [&connected] { connected = true; });
+#endif
+}
+
 } // namespace
 
-int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err) {
+int runMonitorPlant(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const auto config = configOf(o);
     if (!config) {
         err << "tipscope-cli: " << config.error() << Qt::endl;
@@ -162,8 +200,7 @@ int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err) {
     QObject::connect(&agent, &plant::PlantAgent::finished, &loop, &QEventLoop::quit);
     agent.start(config.value());
     bool connected = false;
-    QObject::connect(agent.publisher()->client(), &mqtt::MqttClient::connected, &loop,
-                     [&connected] { connected = true; });
+    watchConnected(agent, &loop, connected);
     QTimer report;
     QObject::connect(&report, &QTimer::timeout, &loop, [&] {
         out << QDateTime::currentDateTime().toString(Qt::ISODateWithMs) << "  " << standing(agent)

@@ -21,14 +21,14 @@ const QStringList kOffline = {QStringLiteral("commands"), QStringLiteral("measur
                               QStringLiteral("board")};
 // Command options that take a value; all others are flags.
 const QStringList kValueOptions = {
-    QStringLiteral("interval"), QStringLiteral("duration"),   QStringLiteral("csv"),
-    QStringLiteral("family"),   QStringLiteral("since"),      QStringLiteral("until"),
-    QStringLiteral("device"),   QStringLiteral("port"),       QStringLiteral("verdict"),
-    QStringLiteral("tool"),     QStringLiteral("work-order"), QStringLiteral("serial"),
-    QStringLiteral("operator"), QStringLiteral("journal"),    QStringLiteral("limit"),
-    QStringLiteral("mqtt"),     QStringLiteral("mqtt-user"),  QStringLiteral("site"),
-    QStringLiteral("cfx"),      QStringLiteral("cfx-user"),   QStringLiteral("cfx-address"),
-    QStringLiteral("pdf")};
+    QStringLiteral("interval"),     QStringLiteral("duration"),   QStringLiteral("csv"),
+    QStringLiteral("family"),       QStringLiteral("since"),      QStringLiteral("until"),
+    QStringLiteral("device"),       QStringLiteral("port"),       QStringLiteral("verdict"),
+    QStringLiteral("tool"),         QStringLiteral("work-order"), QStringLiteral("serial"),
+    QStringLiteral("operator"),     QStringLiteral("journal"),    QStringLiteral("limit"),
+    QStringLiteral("mqtt"),         QStringLiteral("mqtt-user"),  QStringLiteral("site"),
+    QStringLiteral("cfx"),          QStringLiteral("cfx-user"),   QStringLiteral("cfx-address"),
+    QStringLiteral("cfx-requests"), QStringLiteral("pdf")};
 
 // `monitor --csv FILE` names a file; `joints --csv` and `board --csv` a format.
 bool takesValue(const QString &command, const QString &option) {
@@ -44,7 +44,8 @@ const QMap<QString, QStringList> kCommandOptions = {
      {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv"),
       QStringLiteral("csv-one-file"), QStringLiteral("journal"), QStringLiteral("limit"),
       QStringLiteral("mqtt"), QStringLiteral("mqtt-user"), QStringLiteral("site"),
-      QStringLiteral("cfx"), QStringLiteral("cfx-user"), QStringLiteral("cfx-address")}},
+      QStringLiteral("cfx"), QStringLiteral("cfx-user"), QStringLiteral("cfx-address"),
+      QStringLiteral("cfx-requests")}},
     {QStringLiteral("dump"), {QStringLiteral("json")}},
     {QStringLiteral("commands"), {QStringLiteral("family")}},
     {QStringLiteral("profile"), {QStringLiteral("force"), QStringLiteral("dry-run")}},
@@ -103,9 +104,10 @@ QString CliParser::usage() {
         "  monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]\n"
         "                            publish the lines to an MQTT broker as tipscope-agent does\n"
         "                            (docs/mqtt.md); the password from TIPSCOPE_MQTT_PASSWORD\n"
-        "          [--cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADDRESS]]\n"
-        "                            and every station as an IPC-CFX endpoint (docs/cfx.md);\n"
-        "                            the password from TIPSCOPE_CFX_PASSWORD\n"
+        "  monitor --cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADDRESS]\n"
+        "          [--cfx-requests /queue/NAME]\n"
+        "                            every station as an IPC-CFX endpoint (docs/cfx.md), beside\n"
+        "                            --mqtt or alone; the password from TIPSCOPE_CFX_PASSWORD\n"
         "  dump [--json]             every readable parameter, counter and error\n"
         "  commands [--family F]     the command catalog\n"
         "  profile save FILE         every writable setting of the device to a JSON profile\n"

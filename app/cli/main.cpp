@@ -57,8 +57,9 @@ int main(int argc, char *argv[]) {
         return kOk;
     }
     if (options->command == QLatin1String("monitor") &&
-        options->values.contains(QStringLiteral("mqtt")))
-        return runMonitorMqtt(*options, out, err);
+        (options->values.contains(QStringLiteral("mqtt")) ||
+         options->values.contains(QStringLiteral("cfx"))))
+        return runMonitorPlant(*options, out, err);
     if (options->command == QLatin1String("monitor"))
         return runMonitor(*options, out, err);
     if (!options->workspace.isEmpty())

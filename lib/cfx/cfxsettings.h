@@ -28,4 +28,10 @@ struct CfxSettings {
     QString vendor = QStringLiteral("JBC");
 };
 
+// RabbitMQ's AMQP 1.0 addresses, with their leading slash: /exchange/NAME, /exchange/NAME/KEY,
+// /queue/NAME (and /topic/NAME). Every front end checks an address with these before it connects.
+[[nodiscard]] bool isBrokerAddress(const QString &address);
+// A queue, the only address requests can be taken from: an exchange keeps nothing for a reader.
+[[nodiscard]] bool isRequestQueue(const QString &address);
+
 } // namespace tipscope::cfx

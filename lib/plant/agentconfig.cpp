@@ -6,7 +6,6 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
-#include <QRegularExpression>
 #include <algorithm>
 
 namespace tipscope::plant {
@@ -157,13 +156,6 @@ Outcome<void> readPassword(const SecretPlace &place, QByteArray &password, QStri
     return {};
 }
 
-// RabbitMQ's AMQP 1.0 addresses: /exchange/NAME, /exchange/NAME/KEY, /queue/NAME.
-bool isBrokerAddress(const QString &address) {
-    static const QRegularExpression kForm(
-        QStringLiteral("^/(exchange/[^/\\s]+(/[^/\\s]+)?|queue/[^/\\s]+|topic/[^/\\s]+)$"));
-    return kForm.match(address).hasMatch();
-}
-
 std::optional<cfx::CfxSettings> readCfx(Reader &top, const QString &folder, QString *problem,
                                         SecretPlace &secret) {
     const QJsonObject section = top.object("cfx");
@@ -194,13 +186,11 @@ std::optional<cfx::CfxSettings> readCfx(Reader &top, const QString &folder, QStr
     s.keyFile = resolved(folder, s.keyFile);
     if (s.host.isEmpty())
         r.fail(AgentConfigTr::tr("cfx.host must name the AMQP broker"));
-    if (!isBrokerAddress(s.address))
+    if (!cfx::isBrokerAddress(s.address))
         r.fail(AgentConfigTr::tr("cfx.address must be /exchange/NAME, /exchange/NAME/KEY or "
                                  "/queue/NAME, not \"%1\"")
                    .arg(s.address.left(80)));
-    // Requests are taken from a queue: an exchange keeps nothing for a reader to take.
-    if (!s.requestAddress.isEmpty() && (!s.requestAddress.startsWith(QLatin1String("/queue/")) ||
-                                        !isBrokerAddress(s.requestAddress)))
+    if (!s.requestAddress.isEmpty() && !cfx::isRequestQueue(s.requestAddress))
         r.fail(AgentConfigTr::tr("cfx.request_address must be a queue, /queue/NAME, not \"%1\"")
                    .arg(s.requestAddress.left(80)));
     if (s.vendor.trimmed().isEmpty() || s.vendor.size() > AgentConfig::kMaxSiteChars)

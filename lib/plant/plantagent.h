@@ -52,7 +52,10 @@ public:
     [[nodiscard]] journal::Journal *journal() {
         return m_lines.isStarted() ? &m_lines.journal() : nullptr;
     }
+    // Null when the configuration publishes nothing over MQTT ("broker": false).
     [[nodiscard]] PlantPublisher *publisher() const { return m_publisher.get(); }
+    // Null without a "cfx" section (or without Qpid Proton in this build).
+    [[nodiscard]] cfx::CfxPublisher *cfxPublisher() const { return m_cfx.get(); }
     [[nodiscard]] const AgentConfig &config() const { return m_config; }
     // Why the agent stopped by itself (its journal cannot be used); empty otherwise.
     [[nodiscard]] QString failure() const { return m_failure; }

@@ -217,6 +217,26 @@ void TestBadCli::usageErrorsSendNothing_data() {
     QTest::newRow("monitor interval text")
         << QByteArrayList{"--port", p, "--addr", "00:01", "monitor", "--interval", "often"}
         << "--interval";
+    QTest::newRow("cfx requests from an exchange") << QByteArrayList{"--port",
+                                                                     p,
+                                                                     "--addr",
+                                                                     "00:01",
+                                                                     "monitor",
+                                                                     "--cfx",
+                                                                     "amqp://127.0.0.1:1",
+                                                                     "--cfx-requests",
+                                                                     "/exchange/amq.topic"}
+                                                   << "--cfx-requests";
+    QTest::newRow("cfx address without its form") << QByteArrayList{"--port",
+                                                                    p,
+                                                                    "--addr",
+                                                                    "00:01",
+                                                                    "monitor",
+                                                                    "--cfx",
+                                                                    "amqp://127.0.0.1:1",
+                                                                    "--cfx-address",
+                                                                    "/exchange/"}
+                                                  << "--cfx-address";
     QTest::newRow("monitor duration negative")
         << QByteArrayList{"--port", p, "--addr", "00:01", "monitor", "--duration", "-1"}
         << "--duration";

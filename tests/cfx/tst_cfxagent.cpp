@@ -4,15 +4,18 @@
 // absent changes nothing for CFX, and an agent that publishes CFX only ("broker": false) does the
 // same without ever trying MQTT. A board named in the work context is a CFX transaction, and a
 // station's changes of state are said as they happen, and requests on its queue are answered.
+// tipscope-cli's monitor --cfx runs the same agent.
 #include "agentprocess.h"
 #include "cfxtesting.h"
 
 #include "journal/journalreader.h"
 #include "journal/workcontextfile.h"
+#include "programrun.h"
 #include "ptyfixtures.h"
 
 #include <QElapsedTimer>
 #include <QJsonObject>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace tipscope;
@@ -305,6 +308,29 @@ private Q_SLOTS:
                      .value(QStringLiteral("Result"))
                      .toString(),
                  QStringLiteral("Failed"));
+    }
+
+    // tipscope-cli monitor --cfx without --mqtt: the same PlantAgent, CFX only; its stations say
+    // hello and goodbye, nothing tries MQTT, and having reached the broker is success.
+    void theCliPublishesCfxAlone() {
+        CfxConsumer consumer;
+        QVERIFY2(consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), 4),
+                 qPrintable(consumer.output()));
+        QTemporaryDir dir;
+        const testing::ProgramRun run = testing::runProgram(
+            QStringLiteral("tipscope-cli"),
+            {QStringLiteral("--demo"), QStringLiteral("monitor"), QStringLiteral("--cfx"),
+             m_broker->url(), QStringLiteral("--duration"), QStringLiteral("4"),
+             QStringLiteral("--journal"), dir.filePath(QStringLiteral("j.sqlite"))});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
+        QVERIFY2(run.out.contains(QLatin1String("CFX: ")), qPrintable(run.out));
+        QVERIFY2(!run.out.contains(QLatin1String("live messages")), qPrintable(run.out));
+        QVERIFY2(consumer.finish(), qPrintable(consumer.output() + run.err));
+        QVERIFY2(consumer.complaints().isEmpty(), qPrintable(consumer.complaints().join('\n')));
+        QCOMPARE(namesOf(consumer), (QStringList{QStringLiteral("CFX.EndpointConnected"),
+                                                 QStringLiteral("CFX.EndpointConnected"),
+                                                 QStringLiteral("CFX.EndpointShuttingDown"),
+                                                 QStringLiteral("CFX.EndpointShuttingDown")}));
     }
 };
 
