@@ -298,12 +298,57 @@ qint64 JointDetector::tailUntil() const {
     return r.back < 1 ? m_readings.back().timeMs : std::llround(r.straightMs + r.halfWindowMs);
 }
 
-// The edge's crossing on the way back. Readings a degree apart on a smooth climb: a local fit
-// through the readings around the return (a parabola where there are enough of them, else a
-// line) places it within the two readings around it, finer than either. Readings that wobble
-// more than rounding explains would make that local fit chase the wobble: then a parabola
-// through the readings of a wider window on both sides places it, and its scatter says how
-// sure. Readings further apart than the measurement allows only bound it.
+// Two standard deviations of the settled tip's wobble beyond rounding (a fit's own share): how far
+// the wobble alone may carry any reading of this port.
+double JointDetector::wobbleReachK() const {
+    return 2 * std::sqrt(std::max(0.0, m_restingSigmaK * m_restingSigmaK -
+                                           kRoundingSigmaK * kRoundingSigmaK));
+}
+
+// The first-order return through the whole climb: from the lowest reading to the end of the wide
+// window after the return, as the readings past the edge say where the curve levels off. None
+// when it places the return far from the readings around it, or when the readings say the return
+// was not first order (a heater at full power climbing straight): they scatter about it more than
+// about a parabola through the same readings and more than the settled tip's own wobble allows.
+// A parabola alone fitting closer proves nothing, as its third coefficient follows a slow wobble;
+// the wobble's share is allowed the spread a variance has by chance over that many readings.
+std::optional<Approach> JointDetector::approachOf(const Return &r) const {
+    const double setpoint = double(m_joint.setpoint);
+    std::vector<Reading> rise;
+    for (size_t i = r.low + 1; i < m_readings.size(); ++i) {
+        if (double(m_readings.at(i).timeMs) > r.straightMs + r.halfWindowMs)
+            break;
+        rise.push_back(readingOf(m_readings.at(i)));
+    }
+    const auto approach = fitApproach(rise, setpoint, bandEdge());
+    if (!approach)
+        return std::nullopt;
+    // The readings around the return bracket it, give or take how far the wobble may carry a
+    // reading across the edge: a curve crossing outside that is not this return.
+    const double reach = wobbleReachK() / approach->slopePerMs(approach->crossingMs);
+    const double below = double(m_readings.at(r.back - 1).timeMs);
+    const double in = double(m_readings.at(r.back).timeMs);
+    if (approach->crossingMs < below - reach || approach->crossingMs > in + reach)
+        return std::nullopt;
+    const auto parabola = fitPolynomial(rise, 2);
+    if (!parabola || approach->sigma <= parabola->sigma)
+        return approach;
+    const double freedom = double(approach->count - 2);
+    const double allowed = m_restingSigmaK * m_restingSigmaK * (1 + 2 * std::sqrt(2 / freedom));
+    if (approach->sigma * approach->sigma <= allowed)
+        return approach;
+    return std::nullopt;
+}
+
+// The edge's crossing on the way back. A return the readings show to be first order over its
+// whole climb is placed by that curve: tens of kelvin of climb against the same wobble pin it
+// where the few readings around the edge, climbing a few kelvin a second on a slow return, would
+// follow a slow wobble by hundreds of milliseconds. Otherwise, readings a degree apart on a smooth
+// climb: a local fit through the readings around the return (a parabola where there are enough of
+// them, else a line) places it within the two readings around it, finer than either. Readings
+// that wobble more than rounding explains would make that local fit chase the wobble: then a
+// parabola through the readings of a wider window on both sides places it, and its scatter says
+// how sure. Readings further apart than the measurement allows only bound it.
 void JointDetector::estimateRecovery(JointRecord &joint) const {
     const Return r = returnOf();
     if (r.back < 1)
@@ -319,7 +364,10 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
     for (size_t i = from; i < m_readings.size() && i <= r.back + kClimbReadingsAfter; ++i)
         climb.push_back(readingOf(m_readings.at(i)));
     const auto local = fitPolynomial(climb, climb.size() >= 5 ? 2 : 1);
-    if (local && local->sigma > kWobbleSigmaK) {
+    if (const auto approach = approachOf(r)) {
+        crossing = approach->crossingMs;
+        uncertainty = qMax(uncertainty, 2 * approach->crossingSigmaMs);
+    } else if (local && local->sigma > kWobbleSigmaK) {
         std::vector<Reading> wide;
         for (size_t i = r.low + 1; i < m_readings.size(); ++i)
             if (std::abs(double(m_readings.at(i).timeMs) - r.straightMs) <= r.halfWindowMs)
@@ -350,9 +398,7 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
                                    ? (edge - *lowest.tip) / (crossing - double(lowest.timeMs))
                                    : 1e9;
         const double slope = std::min(std::abs(fit->slopePerMs(crossing)), std::abs(average));
-        // Two standard deviations of the wobble beyond rounding (the fit's own share).
-        const double wobble = 2 * std::sqrt(std::max(0.0, m_restingSigmaK * m_restingSigmaK -
-                                                              kRoundingSigmaK * kRoundingSigmaK));
+        const double wobble = wobbleReachK();
         if (wobble > 0)
             uncertainty = std::max(uncertainty, slope > 1e-9 ? wobble / slope : 1e9);
     }

@@ -16,8 +16,9 @@
 // The figures come from all the readings around each event, not from the two that bracket it
 // (jointfit.h): the start is where a line through the first readings of the fall crosses the
 // band's edge, within the last reading before it; the lowest point is the vertex of a parabola
-// through the lowest readings; the recovery is where a local fit through the readings around the
-// return crosses the edge (a wider one on both sides when the readings wobble). Each carries its
+// through the lowest readings; the recovery is where a first-order return fitted through the
+// whole climb crosses the edge when the readings follow one, else where a local fit through the
+// readings around the return does (a wider one on both sides when they wobble). Each carries its
 // uncertainty; a recovery whose readings are too far apart to place it within kMeasuredWithinMs is
 // only bounded (between the readings around it).
 //
@@ -34,6 +35,7 @@
 // bench feed it the same readings and get the same joints.
 #pragma once
 
+#include "model/joints/jointfit.h"
 #include "model/joints/jointrecord.h"
 
 #include <QList>
@@ -112,6 +114,8 @@ private:
     };
     [[nodiscard]] Return returnOf() const;
     [[nodiscard]] qint64 tailUntil() const;
+    [[nodiscard]] std::optional<Approach> approachOf(const Return &r) const;
+    [[nodiscard]] double wobbleReachK() const;
     void settleAfterRecovery(qint64 timeMs);
     [[nodiscard]] double bandEdge() const;
     [[nodiscard]] bool inBand(const PortReading &reading) const;

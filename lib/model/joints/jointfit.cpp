@@ -126,4 +126,112 @@ double crossingUncertaintyMs(const Polynomial &fit, double timeMs) {
     return std::max(1.0, fit.sigma / slope / std::sqrt(std::max(1, fit.count - 1)) * 2);
 }
 
+double Approach::at(double timeMs) const {
+    return asymptote - (asymptote - level) * std::exp(-(timeMs - crossingMs) / tauMs);
+}
+
+double Approach::slopePerMs(double timeMs) const {
+    return (asymptote - level) / tauMs * std::exp(-(timeMs - crossingMs) / tauMs);
+}
+
+namespace {
+
+// A start for the fit: the deficit below the asymptote falls exponentially, so its logarithm is a
+// line in time, fitted with each reading weighted by its deficit squared (a reading's error in
+// the logarithm is its error in kelvin over the deficit). Readings within a degree of the
+// asymptote say nothing about the slope in the logarithm.
+std::optional<Approach> logDeficitStart(const std::vector<Reading> &readings, double asymptote,
+                                        double level) {
+    double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int used = 0;
+    const double origin = double(readings.front().timeMs);
+    for (const Reading &r : readings) {
+        const double deficit = asymptote - r.value;
+        if (deficit < 1)
+            continue;
+        const double w = deficit * deficit;
+        const double x = (double(r.timeMs) - origin) / 1000;
+        const double y = std::log(deficit);
+        sw += w;
+        sx += w * x;
+        sy += w * y;
+        sxx += w * x * x;
+        sxy += w * x * y;
+        ++used;
+    }
+    const double det = sw * sxx - sx * sx;
+    if (used < 3 || std::abs(det) < 1e-12)
+        return std::nullopt;
+    const double slope = (sw * sxy - sx * sy) / det; // per second, negative on a return
+    const double intercept = (sy - slope * sx) / sw;
+    if (slope >= 0)
+        return std::nullopt;
+    Approach a;
+    a.asymptote = asymptote;
+    a.level = level;
+    a.tauMs = -1000 / slope;
+    a.crossingMs = origin + (std::log(asymptote - level) - intercept) / slope * 1000;
+    return a;
+}
+
+} // namespace
+
+std::optional<Approach> fitApproach(const std::vector<Reading> &readings, double asymptote,
+                                    double level) {
+    if (readings.size() < 3 || asymptote <= level)
+        return std::nullopt;
+    std::optional<Approach> a = logDeficitStart(readings, asymptote, level);
+    if (!a)
+        return std::nullopt;
+    // Gauss-Newton on the readings themselves, in (crossing, rate): the start above weighs the
+    // readings by a logarithm's error, not by their own.
+    const double span = double(readings.back().timeMs - readings.front().timeMs);
+    std::array<std::array<double, 2>, 2> normal{};
+    for (int iteration = 0; iteration < 30; ++iteration) {
+        normal = {};
+        std::array<double, 2> gradient{};
+        const double rate = 1000 / a->tauMs; // per second
+        for (const Reading &r : readings) {
+            const double x = (double(r.timeMs) - a->crossingMs) / 1000;
+            const double deficit = (asymptote - level) * std::exp(-rate * x);
+            const double e = r.value - (asymptote - deficit);
+            // ∂y/∂crossing (per ms) and ∂y/∂rate.
+            const std::array<double, 2> j{-deficit * rate / 1000, deficit * x};
+            for (size_t p = 0; p < 2; ++p) {
+                gradient[p] += j[p] * e;
+                for (size_t q = 0; q < 2; ++q)
+                    normal[p][q] += j[p] * j[q];
+            }
+        }
+        const double det = normal[0][0] * normal[1][1] - normal[0][1] * normal[1][0];
+        if (std::abs(det) < 1e-18)
+            return std::nullopt;
+        const double dCrossing = (gradient[0] * normal[1][1] - gradient[1] * normal[0][1]) / det;
+        const double dRate = (normal[0][0] * gradient[1] - normal[1][0] * gradient[0]) / det;
+        const double newRate = rate + dRate;
+        if (!std::isfinite(dCrossing) || !std::isfinite(newRate) || newRate <= 0)
+            return std::nullopt;
+        a->crossingMs += dCrossing;
+        a->tauMs = 1000 / newRate;
+        if (std::abs(dCrossing) < 0.01 && std::abs(dRate) < 1e-6 * newRate)
+            break;
+    }
+    // A fit that settled far outside its readings followed nothing they show.
+    if (a->crossingMs < double(readings.front().timeMs) - span ||
+        a->crossingMs > double(readings.back().timeMs) + span)
+        return std::nullopt;
+    double squares = 0;
+    for (const Reading &r : readings) {
+        const double e = r.value - a->at(double(r.timeMs));
+        squares += e * e;
+    }
+    a->count = int(readings.size());
+    const int freedom = a->count - 2;
+    a->sigma =
+        std::max(kRoundingSigmaK, freedom > 0 ? std::sqrt(squares / freedom) : kRoundingSigmaK);
+    const double det = normal[0][0] * normal[1][1] - normal[0][1] * normal[1][0];
+    a->crossingSigmaMs = a->sigma * std::sqrt(std::max(0.0, normal[1][1] / det));
+    return a;
+}
+
 } // namespace tipscope::model

@@ -49,4 +49,29 @@ inline constexpr double kRoundingSigmaK = 0.2887;
 // shrunk by how many readings carried it (and never below a millisecond).
 [[nodiscard]] double crossingUncertaintyMs(const Polynomial &fit, double timeMs);
 
+// A first-order return towards `asymptote` that passes `level` at crossingMs:
+// y(t) = asymptote − (asymptote − level)·e^(−(t − crossingMs)/τ). A heater bringing its tip back
+// to the setpoint under its controller is close to first order, so a deep return curves the way
+// this does all the way up, where a parabola through the same readings bends too early or too late.
+struct Approach {
+    double asymptote = 0;
+    double level = 0;
+    double crossingMs = 0;
+    double tauMs = 0;
+    // The readings' scatter about the fit (K, never below rounding's) and how far crossingMs may
+    // be off for that scatter (one standard error).
+    double sigma = 0;
+    double crossingSigmaMs = 0;
+    int count = 0;
+
+    [[nodiscard]] double at(double timeMs) const;
+    [[nodiscard]] double slopePerMs(double timeMs) const;
+};
+
+// The first-order return through the readings (least squares on the readings themselves); none
+// when fewer than three readings are below the asymptote, they do not climb towards it, or the
+// fit does not settle.
+[[nodiscard]] std::optional<Approach> fitApproach(const std::vector<Reading> &readings,
+                                                  double asymptote, double level);
+
 } // namespace tipscope::model

@@ -82,6 +82,7 @@ private Q_SLOTS:
     void aTipThatFallsWhileTheHeaterIdlesIsNoJoint();
     void aReadingBackInTheBandByWobbleDoesNotEndTheJoint();
     void aSlowRecoveryIsPlacedFinerThanTheSpacingAndTheWholeDegrees();
+    void aDeepSlowReturnOnAWobblingTipIsPlacedByItsWholeClimb();
     void aRecoveryBetweenReadingsFarApartIsBoundedAndJudgedOnlyWhereTheBoundsAllow_data();
     void aRecoveryBetweenReadingsFarApartIsBoundedAndJudgedOnlyWhereTheBoundsAllow();
 };
@@ -401,6 +402,45 @@ void TestJointDetector::aSlowRecoveryIsPlacedFinerThanTheSpacingAndTheWholeDegre
                                 .arg(back - leave)));
         QVERIFY(!j->recoveryBounded);
     }
+}
+
+// A deep joint (80 K) whose heater brings the tip back as a first-order return (τ 1.1 s), read
+// every 60 to 110 ms in whole degrees on a tip that wobbles ±1.2 K in a 1.7 s swing with a fast
+// ripple on it: near the band's edge the return climbs 5 K/s, so the swing alone moves the
+// readings around the edge by a quarter of a second, and a fit through them there follows it.
+// The whole climb, tens of kelvin against the same wobble, says where the return crosses.
+void TestJointDetector::aDeepSlowReturnOnAWobblingTipIsPlacedByItsWholeClimb() {
+    constexpr double kDip = 80, kTauMs = 1100, kFallMs = 200;
+    const qint64 spacings[] = {60, 95, 70, 110, 80, 65, 100, 75, 90};
+    double worst = 0;
+    QString all;
+    for (const double phase : {0.0, 0.8, 1.6, 2.4, 3.2, 4.0, 4.8, 5.6}) {
+        JointDetector d({}, 1);
+        const qint64 t0 = kT0 + 4000;
+        const auto below = [&](qint64 t) {
+            const double ms = double(t - t0);
+            if (ms <= 0)
+                return 0.0;
+            return ms < kFallMs ? kDip * ms / kFallMs : kDip * std::exp(-(ms - kFallMs) / kTauMs);
+        };
+        const double leave = double(t0) + kFallMs * 5.5 / kDip;
+        const double back = double(t0) + kFallMs + kTauMs * std::log(kDip / 5.5);
+        std::optional<JointRecord> j;
+        size_t k = 0;
+        for (qint64 t = kT0; t < kT0 + 12'000 && !j; t += spacings[k++ % std::size(spacings)]) {
+            const double s = double(t - kT0) / 1000;
+            const double wobble = 1.2 * std::sin(s * 2 * M_PI / 1.7 + phase) +
+                                  0.4 * std::sin(s * 2 * M_PI / 0.23 + 2 * phase);
+            j = d.add(reading(t, kSetpoint - below(t) + wobble, below(t) > 1 ? 90 : 10));
+        }
+        QVERIFY(j && j->recoveryMs);
+        const double error = double(*j->recoveryMs) - (back - leave);
+        all += QStringLiteral(" %1%2").arg(error, 0, 'f', 0).arg(j->recoveryBounded ? "b" : "");
+        if (!j->recoveryBounded)
+            worst = qMax(worst, std::abs(error));
+        QVERIFY2(std::abs(error) <= double(j->recoveryUncertaintyMs), qPrintable(all));
+    }
+    QVERIFY2(worst <= 100, qPrintable(all));
 }
 
 void TestJointDetector::

@@ -14,6 +14,9 @@ private Q_SLOTS:
     void tooFewReadingsOrOneInstantGiveNoFit();
     void aCrossingIsOnlyFoundWithinItsInterval();
     void scatteredReadingsAreLessSure();
+    void aFirstOrderReturnThroughExactReadingsIsFoundExactly();
+    void aFirstOrderReturnIsPlacedThroughWholeDegreesAndAWobble();
+    void aFallOrTooFewReadingsGiveNoReturn();
 };
 
 void TestJointFit::aLineAndAParabolaThroughExactReadingsAreFoundExactly() {
@@ -60,6 +63,54 @@ void TestJointFit::scatteredReadingsAreLessSure() {
     QVERIFY(c && w);
     QVERIFY(w->sigma > 1.5);
     QVERIFY(crossingUncertaintyMs(*w, 300) > 3 * crossingUncertaintyMs(*c, 300));
+}
+
+// y = 350 − 60·e^(−t/800 ms) from t = 0: it passes 344.5 (5.5 K below) at 800·ln(60/5.5).
+namespace {
+constexpr double kAsymptote = 350, kLevel = 344.5, kDeficit = 60, kTauMs = 800;
+double returnAt(qint64 t) {
+    return kAsymptote - kDeficit * std::exp(-double(t) / kTauMs);
+}
+const double kCrossingMs = kTauMs * std::log(kDeficit / (kAsymptote - kLevel));
+} // namespace
+
+void TestJointFit::aFirstOrderReturnThroughExactReadingsIsFoundExactly() {
+    std::vector<Reading> readings;
+    for (qint64 t = 0; t <= 2500; t += 90)
+        readings.push_back({t, returnAt(t)});
+    const auto a = fitApproach(readings, kAsymptote, kLevel);
+    QVERIFY(a);
+    QVERIFY2(std::abs(a->crossingMs - kCrossingMs) < 0.5,
+             qPrintable(QString::number(a->crossingMs)));
+    QVERIFY(std::abs(a->tauMs - kTauMs) < 0.5);
+    QVERIFY(std::abs(a->at(kCrossingMs) - kLevel) < 1e-6);
+    QVERIFY(std::abs(a->slopePerMs(kCrossingMs) - (kAsymptote - kLevel) / kTauMs) < 1e-9);
+    QCOMPARE(a->sigma, kRoundingSigmaK);
+}
+
+// Whole degrees on a tip that wobbles ±1.5 K in a 1.5 s swing: near 344.5 the return climbs
+// 7 K/s, so the swing alone moves the readings there by 200 ms; the whole climb places it within
+// a quarter of that, and says how sure it is.
+void TestJointFit::aFirstOrderReturnIsPlacedThroughWholeDegreesAndAWobble() {
+    for (const double phase : {0.0, 1.0, 2.0, 3.0, 4.0, 5.0}) {
+        std::vector<Reading> readings;
+        for (qint64 t = 0; t <= 2500; t += 70 + (t / 70) % 4 * 15) {
+            const double wobble = 1.5 * std::sin(double(t) / 1500 * 2 * M_PI + phase);
+            readings.push_back({t, std::round(returnAt(t) + wobble)});
+        }
+        const auto a = fitApproach(readings, kAsymptote, kLevel);
+        QVERIFY(a);
+        const double error = std::abs(a->crossingMs - kCrossingMs);
+        QVERIFY2(error < 50, qPrintable(QStringLiteral("phase %1: %2 ms").arg(phase).arg(error)));
+        QVERIFY(a->sigma > 0.8);
+        QVERIFY(a->crossingSigmaMs > 1);
+    }
+}
+
+void TestJointFit::aFallOrTooFewReadingsGiveNoReturn() {
+    QVERIFY(!fitApproach({{0, 300}, {100, 320}}, kAsymptote, kLevel));
+    QVERIFY(!fitApproach({{0, 340}, {100, 330}, {200, 320}, {300, 310}}, kAsymptote, kLevel));
+    QVERIFY(!fitApproach({{0, 300}, {100, 320}, {200, 330}}, kLevel, kLevel));
 }
 
 QTEST_GUILESS_MAIN(TestJointFit)
