@@ -8,18 +8,16 @@ namespace tipscope::cfx {
 
 namespace {
 
-const QJsonValue kNull(QJsonValue::Null);
-
 // The SDK's NumericValue, in the UCUM units its own examples use ("Cel", "s").
 QJsonObject numericValue(double value, const QString &units) {
     return {{QStringLiteral("Value"), value},
             {QStringLiteral("ValueUnits"), units},
-            {QStringLiteral("ExpectedValue"), kNull},
-            {QStringLiteral("ExpectedValueUnits"), kNull},
-            {QStringLiteral("MinimumAcceptableValue"), kNull},
-            {QStringLiteral("MinimumAcceptableValueUnits"), kNull},
-            {QStringLiteral("MaximumAcceptableValue"), kNull},
-            {QStringLiteral("MaximumAcceptableValueUnits"), kNull}};
+            {QStringLiteral("ExpectedValue"), kCfxNull},
+            {QStringLiteral("ExpectedValueUnits"), kCfxNull},
+            {QStringLiteral("MinimumAcceptableValue"), kCfxNull},
+            {QStringLiteral("MinimumAcceptableValueUnits"), kCfxNull},
+            {QStringLiteral("MaximumAcceptableValue"), kCfxNull},
+            {QStringLiteral("MaximumAcceptableValueUnits"), kCfxNull}};
 }
 
 // A value judged against a limit: acceptable from 0 up to it, in the value's units.
@@ -67,19 +65,19 @@ journal::BoardResult resultOf(const BoardWork &work) {
 
 QJsonObject solderPoint(int index, const model::JointRecord &joint) {
     // The tip is the one material TipScope knows of (MaterialType Tip, written as a number).
-    QJsonValue materials = kNull;
+    QJsonValue materials = kCfxNull;
     if (!joint.tool.isEmpty())
         materials = QJsonArray{QJsonObject{{QStringLiteral("Name"), joint.tool},
                                            {QStringLiteral("Type"), 4},
-                                           {QStringLiteral("CustomMaterial"), kNull}}};
+                                           {QStringLiteral("CustomMaterial"), kCfxNull}}};
     return {{QStringLiteral("Name"), solderPointName(index, joint)},
-            {QStringLiteral("Component"), kNull},
+            {QStringLiteral("Component"), kCfxNull},
             {QStringLiteral("Materials"), materials},
             {QStringLiteral("StartedAt"), timeText(joint.startMs)},
             {QStringLiteral("FinishedAt"), timeText(joint.endMs)},
-            {QStringLiteral("SetSolderingPosition"), kNull},
-            {QStringLiteral("ReadSolderingPosition"), kNull},
-            {QStringLiteral("ResultPicture"), kNull}};
+            {QStringLiteral("SetSolderingPosition"), kCfxNull},
+            {QStringLiteral("ReadSolderingPosition"), kCfxNull},
+            {QStringLiteral("ResultPicture"), kCfxNull}};
 }
 
 // The SDK's hand-soldering structure. TelemetryData (a list since CFX 2.1) stays null: the
@@ -99,8 +97,8 @@ QJsonObject handSolderingData(const BoardWork &work) {
             {QStringLiteral("StartedAt"), timeText(started)},
             {QStringLiteral("FinishedAt"), timeText(finished)},
             {QStringLiteral("SolderPoints"), points},
-            {QStringLiteral("TelemetryData"), kNull},
-            {QStringLiteral("File"), kNull},
+            {QStringLiteral("TelemetryData"), kCfxNull},
+            {QStringLiteral("File"), kCfxNull},
             {QStringLiteral("OrderNumber"), cfxText(work.workOrder)}};
 }
 
@@ -212,20 +210,20 @@ QUuid boardId(const QString &serial) {
 }
 
 Message workStarted(const BoardWork &work) {
-    QJsonValue workOrder = kNull;
+    QJsonValue workOrder = kCfxNull;
     if (!work.workOrder.isEmpty())
         workOrder = QJsonObject{{QStringLiteral("WorkOrderId"), work.workOrder},
-                                {QStringLiteral("Batch"), kNull}};
+                                {QStringLiteral("Batch"), kCfxNull}};
     // The board is named by PrimaryIdentifier; Units stays empty, as TipScope knows no position.
     return {QStringLiteral("CFX.Production.WorkStarted"),
             {{QStringLiteral("PrimaryIdentifier"), work.serial},
-             {QStringLiteral("HermesIdentifier"), kNull},
+             {QStringLiteral("HermesIdentifier"), kCfxNull},
              {QStringLiteral("TransactionID"), work.transaction.toString(QUuid::WithoutBraces)},
-             {QStringLiteral("Lane"), kNull},
+             {QStringLiteral("Lane"), kCfxNull},
              {QStringLiteral("UnitCount"), 0},
              {QStringLiteral("Units"), QJsonArray()},
-             {QStringLiteral("RecipeName"), kNull},
-             {QStringLiteral("Revision"), kNull},
+             {QStringLiteral("RecipeName"), kCfxNull},
+             {QStringLiteral("Revision"), kCfxNull},
              {QStringLiteral("RelevantSurface"), QStringLiteral("Unspecified")},
              {QStringLiteral("WorkOrderIdentifier"), workOrder}}};
 }
@@ -236,16 +234,16 @@ Message workCompleted(const BoardWork &work) {
              {QStringLiteral("Result"),
               work.joints.isEmpty() ? QStringLiteral("Skipped") : QStringLiteral("Completed")},
              {QStringLiteral("PrimaryIdentifier"), work.serial},
-             {QStringLiteral("HermesIdentifier"), kNull},
+             {QStringLiteral("HermesIdentifier"), kCfxNull},
              {QStringLiteral("UnitCount"), 0},
              {QStringLiteral("Units"), QJsonArray()},
-             {QStringLiteral("PerformanceImpacts"), kNull}}};
+             {QStringLiteral("PerformanceImpacts"), kCfxNull}}};
 }
 
 Message unitsProcessed(const BoardWork &work) {
     const QString result = processingResultOf(resultOf(work));
     const QJsonObject unit{{QStringLiteral("UnitIdentifier"), work.serial},
-                           {QStringLiteral("UnitPositionNumber"), kNull},
+                           {QStringLiteral("UnitPositionNumber"), kCfxNull},
                            {QStringLiteral("UnitResult"), result},
                            {QStringLiteral("UnitProcessData"), genericData(work)}};
     return {QStringLiteral("CFX.Production.Processing.UnitsProcessed"),

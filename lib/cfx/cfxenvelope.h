@@ -84,6 +84,8 @@ struct AmqpRequest {
 [[nodiscard]] QString cfxDateTime(const QDateTime &time);
 // A duration as .NET's TimeSpan text: "00:01:00", "00:00:25.1230000", "1.02:03:04".
 [[nodiscard]] QString cfxTimeSpan(qint64 ms);
+// A field the SDK writes as null (Newtonsoft writes every null property).
+inline const QJsonValue kCfxNull{QJsonValue::Null};
 // A text as the SDK writes it: null when empty.
 [[nodiscard]] QJsonValue cfxText(const QString &text);
 

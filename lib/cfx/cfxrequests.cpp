@@ -14,8 +14,6 @@ struct CfxRequestsTr {
     Q_DECLARE_TR_FUNCTIONS(Cfx)
 };
 
-const QJsonValue kNull(QJsonValue::Null);
-
 // The SDK's OperatingSystem and OperatingSystemPlatform, which it writes as numbers.
 int operatingSystem() {
     const QString product = QSysInfo::productType();
@@ -90,7 +88,7 @@ Message getEndpointInformationResponse(const EndpointIdentity &endpoint,
         {QStringLiteral("FriendlyName"), cfxText(endpoint.name)},
         {QStringLiteral("Vendor"), cfxText(endpoint.vendor)},
         {QStringLiteral("ModelNumber"), cfxText(endpoint.model)},
-        {QStringLiteral("SerialNumber"), kNull}, // TipScope does not read a station's serial
+        {QStringLiteral("SerialNumber"), kCfxNull}, // TipScope does not read a station's serial
         {QStringLiteral("SoftwareVersion"),
          QStringLiteral("TipScope %1").arg(QCoreApplication::applicationVersion())},
         {QStringLiteral("FirmwareVersion"), cfxText(endpoint.firmware)},
@@ -99,16 +97,16 @@ Message getEndpointInformationResponse(const EndpointIdentity &endpoint,
         {QStringLiteral("OperatingSystemVersion"), cfxText(QSysInfo::productVersion())},
         {QStringLiteral("Stages"), QJsonArray()},
         {QStringLiteral("NumberOfLanes"), 0}, // a hand-soldering station has no conveyor
-        {QStringLiteral("HermesInformation"), kNull},
-        {QStringLiteral("OperatingRequirements"), kNull},
+        {QStringLiteral("HermesInformation"), kCfxNull},
+        {QStringLiteral("OperatingRequirements"), kCfxNull},
         {QStringLiteral("SupportedTopics"), supportedTopics()},
-        {QStringLiteral("SupportedPCBDimensions"), kNull},
-        {QStringLiteral("SleepStates"), kNull}};
+        {QStringLiteral("SupportedPCBDimensions"), kCfxNull},
+        {QStringLiteral("SleepStates"), kCfxNull}};
     return {QStringLiteral("CFX.GetEndpointInformationResponse"),
             {{QStringLiteral("Result"),
               QJsonObject{{QStringLiteral("Result"), QStringLiteral("Success")},
                           {QStringLiteral("ResultCode"), 0},
-                          {QStringLiteral("Message"), kNull}}},
+                          {QStringLiteral("Message"), kCfxNull}}},
              {QStringLiteral("EndpointInformation"), information}}};
 }
 
