@@ -187,6 +187,11 @@ bool RequestQueue::matches(const Entry &e, const Frame &a) const {
 
 void RequestQueue::onReceived(const QByteArray &bytes) {
     m_stats.receivedBytes += bytes.size();
+    // Any byte proves the line carries something: a late answer cut in two by the next request
+    // (its first half discarded as leftovers) never becomes a frame, and must not leave the line
+    // looking unplugged. A wrong baud rate's garbage is said with each request instead.
+    if (!bytes.isEmpty())
+        m_timeoutRun = 0;
     m_tap.rx(bytes);
     qCDebug(lcLinkHex).noquote() << "RX" << bytes.toHex(' ');
     ++m_receiving;

@@ -123,8 +123,9 @@ public:
     [[nodiscard]] int answerBudgetMs(int requestBytes, int minTurnaroundMs = 0) const;
 
 Q_SIGNALS:
-    // Consecutive requests that got no answer at all: a hint that the cable is gone. An answer
-    // of any kind ends the run, also a garbled one or one that came after its request timed out.
+    // Consecutive requests that got no answer at all: a hint that the cable is gone. Any byte
+    // received ends the run: an answer of any kind, a garbled one, one that came after its
+    // request timed out, or part of one.
     void timeoutStreak(int count);
     void statsChanged();
 

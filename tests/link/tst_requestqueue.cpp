@@ -145,6 +145,7 @@ private Q_SLOTS:
     void aFrameAfterATimeoutEndsTheTimeoutStreak();
     void probeSilenceDoesNotLengthenTheTimeoutStreak();
     void corruptedAnswerEndsTheTimeoutStreak();
+    void partOfALateAnswerEndsTheTimeoutStreak();
     void aReplyThatDeletesItselfIsGoneAfterItsFinishedEvenWhenItsOwnerWentFirst();
 };
 
@@ -990,6 +991,27 @@ void TestRequestQueue::corruptedAnswerEndsTheTimeoutStreak() {
     QCOMPARE(silentAgain->error(), ReplyError::Timeout);
 
     QVERIFY(!streak.isEmpty());
+    QCOMPARE(streak.last().at(0).toInt(), 1);
+}
+
+// Under load a late answer arrives in two reads and the next request goes out between them: its
+// first half is discarded as leftovers and no frame is ever decoded. The bytes still prove the
+// device is there.
+void TestRequestQueue::partOfALateAnswerEndsTheTimeoutStreak() {
+    Bench b(quickSettings(0));
+    QSignalSpy streak(&b.queue, &RequestQueue::timeoutStreak);
+    QVERIFY(streak.isValid());
+    Reply *first = b.read("ST1");
+    QTRY_VERIFY_WITH_TIMEOUT(first->isFinished(), kNoAnswerWaitMs);
+    const QByteArray late = answerTo(first->request(), "00350").encode();
+    const qint64 receivedBefore = b.queue.stats().receivedBytes;
+    b.transport.answer(late.left(late.size() / 2));
+    QTRY_COMPARE_WITH_TIMEOUT(b.queue.stats().receivedBytes, receivedBefore + late.size() / 2,
+                              kNoAnswerWaitMs);
+    Reply *second = b.read("ST2");
+    QTRY_VERIFY_WITH_TIMEOUT(second->isFinished(), kNoAnswerWaitMs);
+    QCOMPARE(second->error(), ReplyError::Timeout);
+    QCOMPARE(streak.size(), 2);
     QCOMPARE(streak.last().at(0).toInt(), 1);
 }
 
