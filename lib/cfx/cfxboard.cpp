@@ -1,5 +1,7 @@
 #include "cfxboard.h"
 
+#include "journal/jointexport.h"
+
 #include <QCoreApplication>
 
 #include <cmath>
@@ -39,10 +41,6 @@ QJsonObject parameter(const QString &name, const QString &value) {
     return {{QStringLiteral("Name"), name}, {QStringLiteral("Value"), value}};
 }
 
-QString timeText(qint64 ms) {
-    return cfxDateTime(QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC));
-}
-
 double seconds(qint64 ms) {
     return double(ms) / 1000;
 }
@@ -73,8 +71,8 @@ QJsonObject solderPoint(int index, const model::JointRecord &joint) {
     return {{QStringLiteral("Name"), solderPointName(index, joint)},
             {QStringLiteral("Component"), kCfxNull},
             {QStringLiteral("Materials"), materials},
-            {QStringLiteral("StartedAt"), timeText(joint.startMs)},
-            {QStringLiteral("FinishedAt"), timeText(joint.endMs)},
+            {QStringLiteral("StartedAt"), journal::utcText(joint.startMs)},
+            {QStringLiteral("FinishedAt"), journal::utcText(joint.endMs)},
             {QStringLiteral("SetSolderingPosition"), kCfxNull},
             {QStringLiteral("ReadSolderingPosition"), kCfxNull},
             {QStringLiteral("ResultPicture"), kCfxNull}};
@@ -94,8 +92,8 @@ QJsonObject handSolderingData(const BoardWork &work) {
              QStringLiteral("CFX.Structures.HandSoldering.HandSolderingBoardProcessData, CFX")},
             {QStringLiteral("BoardId"), boardId(work.serial).toString(QUuid::WithoutBraces)},
             {QStringLiteral("BoardName"), work.serial},
-            {QStringLiteral("StartedAt"), timeText(started)},
-            {QStringLiteral("FinishedAt"), timeText(finished)},
+            {QStringLiteral("StartedAt"), journal::utcText(started)},
+            {QStringLiteral("FinishedAt"), journal::utcText(finished)},
             {QStringLiteral("SolderPoints"), points},
             {QStringLiteral("TelemetryData"), kCfxNull},
             {QStringLiteral("File"), kCfxNull},
@@ -152,7 +150,7 @@ QJsonObject jointStage(int index, const journal::StoredJoint &stored) {
                   joint.recoveryBounded ? QStringLiteral("true") : QStringLiteral("false")),
         parameter(QStringLiteral("Port"), QString::number(joint.port)),
         parameter(QStringLiteral("Tool"), joint.tool),
-        parameter(QStringLiteral("StartedAt"), timeText(joint.startMs))};
+        parameter(QStringLiteral("StartedAt"), journal::utcText(joint.startMs))};
     return {{QStringLiteral("Stage"), stage},
             {QStringLiteral("Setpoints"), setpoints},
             {QStringLiteral("Readings"), readings},

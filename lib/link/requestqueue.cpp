@@ -187,9 +187,11 @@ bool RequestQueue::matches(const Entry &e, const Frame &a) const {
 
 void RequestQueue::onReceived(const QByteArray &bytes) {
     m_stats.receivedBytes += bytes.size();
-    // Any byte proves the line carries something: a late answer cut in two by the next request
-    // (its first half discarded as leftovers) never becomes a frame, and must not leave the line
-    // looking unplugged. A wrong baud rate's garbage is said with each request instead.
+    // Any byte proves the line carries something, so it ends the timeout streak: an answer, a
+    // garbled one, one so late that nothing waits for it any more, or a late answer cut in two by
+    // the next request (its first half discarded as leftovers, never a frame). A line that carries
+    // bytes must not be closed as if it were unplugged; a wrong baud rate's garbage is said with
+    // each request instead.
     if (!bytes.isEmpty())
         m_timeoutRun = 0;
     m_tap.rx(bytes);
@@ -231,10 +233,6 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
 void RequestQueue::onStray(const DecodeEvent &ev) {
     ++m_stats.stray;
     m_tap.decoded(ev, true);
-    // A whole frame proves the cable is there, and a late answer that the device is too, only
-    // slow: a line that carries frames must not be closed as if it were unplugged, even when an
-    // answer came so late that nothing waits for it any more.
-    m_timeoutRun = 0;
     if (!m_late.absorb(ev.frame, m_settings.robotAddress))
         return;
     ++m_stats.lateAnswers;
@@ -272,7 +270,6 @@ void RequestQueue::onTimer() {
 
 void RequestQueue::complete(const Frame &answer) {
     m_timer.stop();
-    m_timeoutRun = 0;
     Entry &e = *m_current;
     const qint64 latency = nowUs() - e.lastSentUs;
     m_stats.recordAnswer(latency, nowMs());
@@ -307,8 +304,6 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
         holdAfterTimeout(e);
         ++(e.request.probe ? m_stats.probesUnanswered : m_stats.timeouts);
         m_tap.note(tr("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
-    } else {
-        m_timeoutRun = 0; // a garbled answer still proves the cable and the device are there
     }
     const bool retry = canRetry(e);
     qCDebug(lcLink).noquote() << e.frame.toString() << replyErrorName(error) << why << "attempt"
