@@ -13,10 +13,11 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTabWidget>
+#include <QTest>
 #include <QToolButton>
 #include <QTranslator>
-#include <QtTest>
 
 using namespace tipscope;
 using namespace tipscope::gui;

@@ -6,8 +6,8 @@
 #include "i18n/translations.h"
 
 #include <QRegularExpression>
+#include <QTest>
 #include <QTranslator>
-#include <QtTest>
 
 using namespace tipscope;
 using model::Session;

@@ -8,7 +8,7 @@
 #include "support/ptyfixtures.h"
 
 #include <QLabel>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope;
 using namespace tipscope::model;

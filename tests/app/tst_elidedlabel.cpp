@@ -3,7 +3,7 @@
 // more room than it needs.
 #include "widgets/elidedlabel.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::gui;
 

@@ -11,7 +11,7 @@
 
 #include <QDoubleSpinBox>
 #include <QPushButton>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope;
 using namespace tipscope::model;

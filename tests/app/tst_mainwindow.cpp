@@ -14,12 +14,13 @@
 #include "sim/simline.h"
 
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStyle>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QTranslator>
 #include <QTreeWidgetItemIterator>
-#include <QtTest>
 
 using namespace tipscope;
 using namespace tipscope::gui;

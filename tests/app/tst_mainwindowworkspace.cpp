@@ -15,8 +15,9 @@
 #include "model/workspace/workspacefile.h"
 
 #include <QSettings>
+#include <QStandardPaths>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope;
 using namespace tipscope::gui;

@@ -17,7 +17,7 @@
 #include "mosquittobroker.h"
 
 #include <QStackedWidget>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope;
 using namespace tipscope::testing;

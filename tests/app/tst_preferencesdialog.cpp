@@ -5,7 +5,7 @@
 
 #include <QLabel>
 #include <QSpinBox>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope;
 

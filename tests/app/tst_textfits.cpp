@@ -22,12 +22,13 @@
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStyleOptionComboBox>
 #include <QTabBar>
 #include <QTabWidget>
+#include <QTest>
 #include <QToolButton>
 #include <QTranslator>
-#include <QtTest>
 
 using namespace tipscope;
 using namespace tipscope::gui;

@@ -4,7 +4,7 @@
 // value asked for were another value's.
 #include "programrun.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::testing;
 

@@ -11,7 +11,7 @@
 
 #include <QRegularExpression>
 #include <QTemporaryFile>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::testing;
 

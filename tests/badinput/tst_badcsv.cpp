@@ -7,7 +7,7 @@
 #include "model/recording/chartcsvreader.h"
 
 #include <QBuffer>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::model;
 

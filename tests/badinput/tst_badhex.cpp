@@ -5,7 +5,7 @@
 // tst_badcli proves the same for `send` on a real wire, so the parser is the whole story here.
 #include "protocol/hexbytes.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::protocol;
 

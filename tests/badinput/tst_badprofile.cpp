@@ -6,7 +6,7 @@
 #include "model/profile.h"
 #include "model/profilerequest.h"
 
-#include <QtTest>
+#include <QTest>
 #include <csignal>
 #include <sys/stat.h>
 #include <thread>

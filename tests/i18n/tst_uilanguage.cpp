@@ -12,9 +12,10 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QTranslator>
-#include <QtTest>
 
 using namespace tipscope;
 

@@ -7,7 +7,7 @@
 #include "sim/simline.h"
 
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::link;
 using tipscope::sim::SimLine;

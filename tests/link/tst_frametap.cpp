@@ -7,8 +7,8 @@
 #include "link/frametap.h"
 
 #include <QDateTime>
+#include <QTest>
 #include <QThread>
-#include <QtTest>
 
 using namespace tipscope::link;
 using tipscope::protocol::DecodeEvent;

@@ -9,7 +9,7 @@
 #include <QFile>
 #include <QRandomGenerator>
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::link;
 using tipscope::sim::SimLine;

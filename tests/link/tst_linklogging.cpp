@@ -9,7 +9,7 @@
 
 #include <QLoggingCategory>
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::link;
 using tipscope::protocol::FrameDecoder;

@@ -8,7 +8,7 @@
 
 #include <QElapsedTimer>
 #include <QRandomGenerator>
-#include <QtTest>
+#include <QTest>
 #include <algorithm>
 
 using namespace tipscope::link;

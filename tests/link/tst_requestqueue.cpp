@@ -10,7 +10,7 @@
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::link;
 using namespace tipscope::protocol;

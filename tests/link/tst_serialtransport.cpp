@@ -6,7 +6,7 @@
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::link;
 using tipscope::testing::SimProcess;

@@ -9,7 +9,7 @@
 #include "sim/simline.h"
 
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 #include <memory>
 
 namespace tipscope::testing {

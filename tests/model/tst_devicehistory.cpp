@@ -10,7 +10,7 @@
 
 #include "support/ptyfixtures.h"
 
-#include <QtTest>
+#include <QTest>
 #include <cmath>
 
 using namespace tipscope;

@@ -10,7 +10,8 @@
 #include "support/ptyfixtures.h"
 #include "support/testcatalog.h"
 
-#include <QtTest>
+#include <QSignalSpy>
+#include <QTest>
 
 using namespace tipscope;
 using namespace tipscope::model;

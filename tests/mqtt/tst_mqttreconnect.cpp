@@ -5,7 +5,7 @@
 #include "mqtttesting.h"
 
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::mqtt;
 using namespace tipscope::testing;

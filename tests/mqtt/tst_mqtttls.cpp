@@ -6,7 +6,7 @@
 #include "testcertificates.h"
 
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::mqtt;
 using namespace tipscope::testing;

@@ -2,7 +2,7 @@
 // broker matches them (MQTT 3.1.1, 4.7).
 #include "mqtt/mqtttopic.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::mqtt;
 

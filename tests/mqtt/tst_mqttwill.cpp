@@ -5,7 +5,7 @@
 #include "mqtttesting.h"
 
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 #include <signal.h>
 
 using namespace tipscope::mqtt;

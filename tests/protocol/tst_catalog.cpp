@@ -4,7 +4,7 @@
 #include "support/testcatalog.h"
 
 #include <QSet>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::protocol;
 

@@ -1,7 +1,7 @@
 // Data-field formats: numbers, ss.cc delays, the disabled sentinel, hex counters, text.
 #include "protocol/datafield.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::protocol;
 

@@ -2,7 +2,7 @@
 // control characters by their code.
 #include "protocol/elide.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::protocol;
 

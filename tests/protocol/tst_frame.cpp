@@ -1,7 +1,7 @@
 // The guides' worked frames, byte-exact in both directions.
 #include "protocol/framedecoder.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::protocol;
 

@@ -2,7 +2,7 @@
 #include "protocol/framedecoder.h"
 
 #include <QRandomGenerator>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::protocol;
 

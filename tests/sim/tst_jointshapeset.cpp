@@ -7,7 +7,7 @@
 #include "sim/simline.h"
 
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::sim;
 using tipscope::protocol::Frame;

@@ -11,7 +11,7 @@
 #include <QDeadlineTimer>
 #include <QRegularExpression>
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope;
 using namespace tipscope::sim;

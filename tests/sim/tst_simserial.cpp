@@ -8,7 +8,7 @@
 #include <QFile>
 #include <QSerialPort>
 #include <QTcpSocket>
-#include <QtTest>
+#include <QTest>
 
 #include <netinet/in.h>
 #include <sys/socket.h>

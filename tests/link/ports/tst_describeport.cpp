@@ -7,7 +7,7 @@
 #include "scratchsysfs.h"
 
 #include <QSerialPort>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::link;
 

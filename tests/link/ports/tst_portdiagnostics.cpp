@@ -8,7 +8,7 @@
 #include <QFile>
 #include <QSerialPort>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include <grp.h>
 #include <unistd.h>

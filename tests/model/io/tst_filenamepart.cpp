@@ -5,7 +5,7 @@
 
 #include <QDir>
 #include <QFileInfo>
-#include <QtTest>
+#include <QTest>
 
 using tipscope::model::io::fileNamePart;
 using tipscope::model::io::kFileNamePartChars;

@@ -3,7 +3,7 @@
 #include "model/io/jsonfile.h"
 
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::model::io;
 

@@ -4,7 +4,7 @@
 #include "model/telemetry/telemetry.h"
 
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::model;
 

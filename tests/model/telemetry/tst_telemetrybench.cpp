@@ -4,8 +4,8 @@
 #include "model/telemetry/telemetrybench.h"
 
 #include <QRegularExpression>
+#include <QTest>
 #include <QTextStream>
-#include <QtTest>
 
 class TestTelemetryBench : public QObject {
     Q_OBJECT

@@ -3,7 +3,7 @@
 // bytes per sample per series measured on the real heap.
 #include "model/telemetry/telemetrybuffer.h"
 
-#include <QtTest>
+#include <QTest>
 
 #if defined(__GLIBC__)
 #include <malloc.h>

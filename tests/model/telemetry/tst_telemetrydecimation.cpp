@@ -3,7 +3,7 @@
 // spike in a day of flat data is never lost.
 #include "telemetryreference.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope::model;
 using namespace tipscope::model::test;

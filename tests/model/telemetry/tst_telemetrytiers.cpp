@@ -7,7 +7,7 @@
 #include "model/telemetry/telemetrybuffer.h"
 #include "telemetryreference.h"
 
-#include <QtTest>
+#include <QTest>
 #include <cmath>
 
 using namespace tipscope::model;

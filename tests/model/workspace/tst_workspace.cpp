@@ -8,7 +8,7 @@
 #include "support/programrun.h"
 
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 
 using namespace tipscope;
 using namespace tipscope::model;
