@@ -64,6 +64,28 @@ QString Journal::defaultPath() {
     return QDir(data).filePath(QStringLiteral("TipScope/TipScope/journal.sqlite"));
 }
 
+namespace {
+
+// When a record began: a joint's start; an event's own time.
+qint64 startOf(const PendingJoint &pending) {
+    return pending.joint.startMs;
+}
+qint64 startOf(const PendingEvent &pending) {
+    return pending.event.timeMs;
+}
+
+// The context in force at `timeMs`: an earlier one that ended after it, when that was within
+// Journal::kJointSpanMs (a live joint's start); else the current one, as for a record stamped
+// with another clock than the wall's (a recording played back). Called with the mutex held.
+model::WorkContext contextAt(const JournalShared &shared, qint64 timeMs) {
+    for (const auto &[endedMs, context] : shared.earlierContexts)
+        if (timeMs < endedMs)
+            return endedMs - timeMs <= Journal::kJointSpanMs ? context : shared.context;
+    return shared.context;
+}
+
+} // namespace
+
 QUuid Journal::append(const model::JointRecord &joint) {
     return enqueue(PendingJoint{QUuid(), {}, joint});
 }
@@ -99,7 +121,7 @@ QUuid Journal::enqueue(Pending pending, const model::WorkContext *context) {
         }
         if (reason.isEmpty()) {
             pending.uid = QUuid::createUuid();
-            pending.context = context ? *context : m_shared->context;
+            pending.context = context ? *context : contextAt(*m_shared, startOf(pending));
             const QUuid uid = pending.uid;
             lock.unlock();
             return post(*m_shared, m_writer, std::move(pending))
@@ -133,14 +155,19 @@ void Journal::markEventsSent(const QList<qint64> &ids, SentChannel channel) {
 
 void Journal::setContext(const model::WorkContext &context) {
     model::WorkContext before;
+    const qint64 nowMs = QDateTime::currentMSecsSinceEpoch();
     {
         QMutexLocker lock(&m_shared->mutex);
         before = m_shared->context;
+        if (before == context)
+            return;
         m_shared->context = context;
+        m_shared->earlierContexts.emplace_back(nowMs, before);
+        if (m_shared->earlierContexts.size() > std::size_t(kContextsKept))
+            m_shared->earlierContexts.pop_front();
     }
-    if (before == context)
-        return;
     JournalEvent event;
+    event.timeMs = nowMs; // the moment the context changed, as the joints are told
     event.kind = JournalEvent::Kind::ContextChange;
     event.text = tr("Work order: %1, board: %2, operator: %3")
                      .arg(context.workOrder, context.boardSerial, context.operatorName);
@@ -202,6 +229,16 @@ QString Journal::lossReason() const {
 qint64 Journal::pendingCount() const {
     QMutexLocker lock(&m_shared->mutex);
     return qint64(m_shared->queue.size()) + m_shared->held;
+}
+
+quint64 Journal::appendedMark() const {
+    QMutexLocker lock(&m_shared->mutex);
+    return m_shared->appended;
+}
+
+bool Journal::dealtWith(quint64 mark) const {
+    QMutexLocker lock(&m_shared->mutex);
+    return m_shared->handled >= mark;
 }
 
 bool Journal::flush(int timeoutMs) {

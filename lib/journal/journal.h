@@ -40,6 +40,12 @@ class JournalWriter;
 class Journal : public QObject {
     Q_OBJECT
 public:
+    // Changes of context remembered for the joints open across them, and how long before a
+    // change a joint may have begun: a live joint ends within JointDetector::kGiveUpMs (30 s)
+    // and its tail, and is appended at once.
+    static constexpr int kContextsKept = 16;
+    static constexpr qint64 kJointSpanMs = 60'000;
+
     // Opens (creates, migrates) `path`, or defaultPath() when empty, on the writer thread.
     explicit Journal(const QString &path = QString(), const JournalOptions &options = {},
                      QObject *parent = nullptr);
@@ -50,7 +56,9 @@ public:
     [[nodiscard]] static QString defaultPath();
     [[nodiscard]] QString path() const { return m_path; }
 
-    // The record's unique id; a null id when the record was counted lost at once.
+    // The record's unique id; a null id when the record was counted lost at once. A joint is
+    // stamped with the work context in force when it began, not when it ended: one that spans
+    // a change of board was soldered on the board named before (kContextsKept changes back).
     QUuid append(const model::JointRecord &joint);
     // An event without a time (0) is stamped with the wall clock.
     QUuid append(JournalEvent event);
@@ -77,6 +85,10 @@ public:
     [[nodiscard]] QString lossReason() const;
     // Records queued or held in memory, not yet written.
     [[nodiscard]] qint64 pendingCount() const;
+    // A mark of everything appended so far, and whether all of it has since been dealt with
+    // (written, held or counted lost): what a reader of the file can wait for without blocking.
+    [[nodiscard]] quint64 appendedMark() const;
+    [[nodiscard]] bool dealtWith(quint64 mark) const;
 
     // Waits until everything appended before the call is dealt with; true when all of it was
     // written. For shutdown, the CLI and tests: it blocks, so never call it on the poll path.

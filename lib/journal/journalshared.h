@@ -49,6 +49,9 @@ struct JournalShared {
     QString errorText;
     JournalProblem problem = JournalProblem::None;
     model::WorkContext context;
+    // The contexts before `context`, newest last, each with the time it ended, for the joints
+    // still open at a change (Journal::append of a joint); at most kContextsKept.
+    std::deque<std::pair<qint64, model::WorkContext>> earlierContexts;
     int retentionDays = kDefaultRetentionDays; // in force
 };
 

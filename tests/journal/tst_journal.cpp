@@ -7,7 +7,9 @@
 
 #include "journal/journalreader.h"
 
+#include <QDateTime>
 #include <QJsonArray>
+#include <QMap>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -59,6 +61,7 @@ private Q_SLOTS:
     void anEventWithoutATimeIsStampedWithTheWallClock();
     void committedNamesEachDurableRecordByRowAndUniqueId();
     void theContextIsStampedUntilChangedAndItsChangeIsAnEvent();
+    void aJointOpenAcrossABoardChangeIsTheEarlierBoards();
     void sentMarksTakeRecordsOutOfTheUnsentListInOrder();
     void closingWritesWhatIsQueuedAndLaterAppendsAreCountedLost();
     void aRecordTheDatabaseRefusesIsCountedLostAndTheOthersAreKept();
@@ -261,6 +264,34 @@ void TestJournal::theContextIsStampedUntilChangedAndItsChangeIsAnEvent() {
     QCOMPARE(details.value(QStringLiteral("to"))[QStringLiteral("operator")].toString(),
              QStringLiteral("Ben"));
     QVERIFY(changes.at(1).record.text.contains(QStringLiteral("WO-2")));
+}
+
+void TestJournal::aJointOpenAcrossABoardChangeIsTheEarlierBoards() {
+    const model::WorkContext first{QString(), QStringLiteral("SN-1"), QString()};
+    const model::WorkContext second{QString(), QStringLiteral("SN-2"), QString()};
+    {
+        Journal journal(m_path, quickOptions());
+        journal.setContext(first);
+        const qint64 firstMs = QDateTime::currentMSecsSinceEpoch(); // SN-1 named by now
+        QTest::qWait(20);
+        const qint64 changeMs = QDateTime::currentMSecsSinceEpoch(); // SN-2 named after it
+        journal.setContext(second);
+        // Begun on SN-1, ended after the change.
+        journal.append(sampleJoint(0, (firstMs + changeMs) / 2));
+        journal.append(sampleJoint(1, changeMs + 1000)); // begun on SN-2
+        // Begun longer before the change than a live joint can last: another clock's (a
+        // recording played back), stamped with the context of the moment.
+        journal.append(sampleJoint(2, changeMs - Journal::kJointSpanMs - 60'000));
+        QVERIFY(journal.flush());
+    }
+    const QList<StoredJoint> joints = allJoints(m_path);
+    QCOMPARE(joints.size(), 3);
+    QMap<qint64, QString> boardOf;
+    for (const StoredJoint &joint : joints)
+        boardOf.insert(joint.record.startMs, joint.context.boardSerial);
+    const QList<QString> boards = boardOf.values(); // by start: the replayed, SN-1's, SN-2's
+    QCOMPARE(boards, (QList<QString>{QStringLiteral("SN-2"), QStringLiteral("SN-1"),
+                                     QStringLiteral("SN-2")}));
 }
 
 void TestJournal::sentMarksTakeRecordsOutOfTheUnsentListInOrder() {
