@@ -7,6 +7,7 @@
 #include "journal/journal.h"
 #include "model/workcontextjson.h"
 
+#include <QDateTime>
 #include <QLoggingCategory>
 
 Q_LOGGING_CATEGORY(lcCfxForwarder, "tipscope.cfx.forwarder")
@@ -18,6 +19,8 @@ constexpr int kBatch = 100;
 constexpr int kMarkEveryMs = 200;
 // How far back a clearing looks for the error it clears, after a restart forgot it.
 constexpr int kLookBack = 50;
+// How often a board waiting for its joints looks again.
+constexpr int kBoardCheckMs = 100;
 
 using Severity = journal::JournalEvent::Severity;
 
@@ -30,13 +33,16 @@ QString boardNamedBy(const journal::StoredEvent &change) {
 } // namespace
 
 CfxForwarder::CfxForwarder(journal::Journal &journal, AmqpSender &sender, HandleOf handleOf,
-                           Codec codec, BoardStations boardStations, QObject *parent)
+                           Codec codec, Boards boards, QObject *parent)
     : QObject(parent)
     , m_journal(journal)
     , m_sender(sender)
     , m_handleOf(std::move(handleOf))
     , m_codec(codec)
-    , m_boardStations(std::move(boardStations)) {
+    , m_boards(std::move(boards)) {
+    m_waitTimer.setSingleShot(true);
+    m_waitTimer.setInterval(kBoardCheckMs);
+    connect(&m_waitTimer, &QTimer::timeout, this, &CfxForwarder::pumpSoon);
     m_pumpTimer.setSingleShot(true);
     m_pumpTimer.setInterval(20); // coalesces a burst of commits and acceptances
     connect(&m_pumpTimer, &QTimer::timeout, this, &CfxForwarder::pump);
@@ -76,6 +82,11 @@ void CfxForwarder::pump() {
         if (events->isEmpty())
             return;
         for (const journal::StoredEvent &event : *events) {
+            if (event.record.kind == journal::JournalEvent::Kind::ContextChange &&
+                !boardReady(event)) {
+                m_waitTimer.start();
+                return;
+            }
             const std::optional<QList<Envelope>> made = envelopesOf(event);
             if (!made)
                 return; // the journal could not be read: the event waits, the problem is said
@@ -157,7 +168,7 @@ std::optional<QList<Envelope>> CfxForwarder::boardEnvelopesOf(const journal::Sto
                                   // started again
 
     const QList<model::DeviceIdentity> stations =
-        m_boardStations ? m_boardStations() : QList<model::DeviceIdentity>();
+        m_boards.stations ? m_boards.stations() : QList<model::DeviceIdentity>();
     QList<Envelope> envelopes;
     const auto add = [&](const Message &message, const model::DeviceIdentity &station,
                          qint64 timeMs) {
@@ -209,6 +220,31 @@ std::optional<QList<Envelope>> CfxForwarder::boardEnvelopesOf(const journal::Sto
             add(workStarted(work), station, work.startedMs);
     }
     return envelopes;
+}
+
+bool CfxForwarder::boardReady(const journal::StoredEvent &change) {
+    if (!m_boards.settled)
+        return true;
+    const qint64 nowMs = QDateTime::currentMSecsSinceEpoch();
+    if (!m_waiting || m_waiting->row != change.id)
+        m_waiting = Waiting{change.id, nowMs, std::nullopt};
+    if (nowMs - m_waiting->sinceMs >= kBoardWaitMaxMs) {
+        qCWarning(lcCfxForwarder,
+                  "a board's messages waited %lld s for its last joints or stations: sent "
+                  "without what had not come",
+                  static_cast<long long>(kBoardWaitMaxMs / 1000));
+        m_waiting.reset();
+        return true;
+    }
+    if (!m_waiting->journalMark) {
+        if (!m_boards.settled(change.record.timeMs))
+            return false;
+        m_waiting->journalMark = m_journal.appendedMark();
+    }
+    if (!m_journal.dealtWith(*m_waiting->journalMark))
+        return false;
+    m_waiting.reset();
+    return true;
 }
 
 QUuid CfxForwarder::raisingOccurrence(const journal::StoredEvent &cleared) {

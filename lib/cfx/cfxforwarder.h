@@ -21,6 +21,14 @@
 // messages, each with a UniqueID made from the event's id, its message and its station; the
 // event is marked sent when the broker accepted all of them.
 //
+// A board's messages wait (and the events after them) until its joints are all in the journal:
+// a joint begun before the change belongs to the board that ends (Journal::append) but is
+// journaled only once it ended, seconds later. Boards::settled says when the stations have
+// ended every joint begun before a time and are all known (after a restart, before its lines
+// found their stations, the board would reach only some of them); the journal then has to have
+// written what was appended until then. The wait ends after kBoardWaitMaxMs whatever: a line
+// that stays down must not hold the spool.
+//
 // The journal and the sender must outlive the forwarder, and live on its thread.
 #pragma once
 
@@ -47,13 +55,21 @@ class CfxForwarder : public QObject {
 public:
     // The CFX handle of the endpoint a device's records are sent as.
     using HandleOf = std::function<QString(const model::DeviceIdentity &device)>;
-    // The stations that work on the board the shared work context names (those on lines without
-    // a context of their own).
-    using BoardStations = std::function<QList<model::DeviceIdentity>()>;
+    struct Boards {
+        // The stations that work on the board the shared work context names (those on lines
+        // without a context of their own).
+        std::function<QList<model::DeviceIdentity>()> stations;
+        // True once those stations are all known and have ended every joint begun before the
+        // time given (ms since the epoch); none: at once.
+        std::function<bool(qint64 timeMs)> settled;
+    };
     static constexpr int kWindow = 200;
+    // The longest a board's messages wait for its last joints: a joint ends within
+    // JointDetector::kGiveUpMs (30 s) and its tail, and is journaled within a second.
+    static constexpr qint64 kBoardWaitMaxMs = 35'000;
 
     CfxForwarder(journal::Journal &journal, AmqpSender &sender, HandleOf handleOf, Codec codec,
-                 BoardStations boardStations = {}, QObject *parent = nullptr);
+                 Boards boards = {}, QObject *parent = nullptr);
 
     [[nodiscard]] qint64 acceptedCount() const { return m_accepted; }
     [[nodiscard]] int waitingCount() const { return int(m_inFlight.size()); }
@@ -75,6 +91,9 @@ private:
     [[nodiscard]] std::optional<QList<Envelope>>
     boardEnvelopesOf(const journal::StoredEvent &change);
     [[nodiscard]] QUuid raisingOccurrence(const journal::StoredEvent &cleared);
+    // False while a context change must wait for its board's joints (then pump() is called
+    // again soon).
+    [[nodiscard]] bool boardReady(const journal::StoredEvent &change);
     void markSoon(qint64 row);
     void onAccepted(quint64 tag);
     void onLost();
@@ -85,7 +104,16 @@ private:
     AmqpSender &m_sender;
     HandleOf m_handleOf;
     Codec m_codec;
-    BoardStations m_boardStations;
+    Boards m_boards;
+    // The context change waiting for its board's joints: its row, since when it waits, and the
+    // journal's mark once the stations had settled.
+    struct Waiting {
+        qint64 row = 0;
+        qint64 sinceMs = 0;
+        std::optional<quint64> journalMark;
+    };
+    std::optional<Waiting> m_waiting;
+    QTimer m_waitTimer;
     journal::JournalReader m_reader;
     qint64 m_cursor = 0;
     std::map<quint64, qint64> m_inFlight; // tag → event row

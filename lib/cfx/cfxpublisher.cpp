@@ -9,12 +9,11 @@ namespace tipscope::cfx {
 
 CfxPublisher::CfxPublisher(journal::Journal &journal, const CfxSettings &settings,
                            CfxForwarder::HandleOf handleOf, Endpoints endpoints,
-                           CfxForwarder::BoardStations boardStations, QObject *parent)
+                           CfxForwarder::Boards boards, QObject *parent)
     : QObject(parent)
     , m_settings(settings)
     , m_endpoints(std::move(endpoints))
-    , m_forwarder(journal, m_sender, std::move(handleOf), settings.codec,
-                  std::move(boardStations)) {
+    , m_forwarder(journal, m_sender, std::move(handleOf), settings.codec, std::move(boards)) {
     m_heartbeat.setInterval(settings.heartbeatS * 1000);
     connect(&m_heartbeat, &QTimer::timeout, this, [this] {
         const qint64 periodMs = m_settings.heartbeatS * 1000LL;

@@ -9,8 +9,9 @@
 //
 // The endpoints are named by endpoints() (asked anew each time, so stations found later are
 // included); with a request address they also answer requests (cfxrequests.h) and the journal's
-// records by handleOf(); boardStations() says which stations work on the board the shared work
-// context names (the forwarder's per-board messages). All three come from the front end, which
+// records by handleOf(); `boards` says which stations work on the board the shared work context
+// names and when their joints are in (the forwarder's per-board messages). All three come from
+// the front end, which
 // knows the workspace. stop() sends the goodbyes, waits for the broker to accept them (at most
 // `timeoutMs`) and emits stopped(). The journal must outlive the publisher.
 #pragma once
@@ -38,7 +39,7 @@ public:
 
     CfxPublisher(journal::Journal &journal, const CfxSettings &settings,
                  CfxForwarder::HandleOf handleOf, Endpoints endpoints,
-                 CfxForwarder::BoardStations boardStations = {}, QObject *parent = nullptr);
+                 CfxForwarder::Boards boards = {}, QObject *parent = nullptr);
 
     void start();
     void stop(int timeoutMs = 3000);

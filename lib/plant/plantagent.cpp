@@ -96,7 +96,9 @@ void PlantAgent::startCfx() {
     m_cfx = std::make_unique<cfx::CfxPublisher>(
         m_lines.journal(), *m_config.cfx,
         [this](const model::DeviceIdentity &device) { return cfxHandleOf(device); },
-        [this] { return cfxEndpoints(); }, [this] { return boardStations(); });
+        [this] { return cfxEndpoints(); },
+        cfx::CfxForwarder::Boards{[this] { return boardStations(); },
+                                  [this](qint64 timeMs) { return boardSettled(timeMs); }});
     connect(m_cfx.get(), &cfx::CfxPublisher::stopped, this, [this] {
         m_cfx.release()->deleteLater(); // its own signal is still being emitted
         finishIfStopped();
@@ -162,6 +164,20 @@ QList<model::DeviceIdentity> PlantAgent::boardStations() {
                 if (qobject_cast<const model::StationModel *>(device))
                     stations.append(device->identity());
     return stations;
+}
+
+bool PlantAgent::boardSettled(qint64 timeMs) {
+    model::Workspace &workspace = m_lines.workspace();
+    for (int i = 0; i < workspace.count(); ++i) {
+        if (workspace.line(i).ownContext())
+            continue;
+        model::Session *session = workspace.session(i);
+        // A line that has not found its stations yet (just started, or reconnecting) would
+        // leave them out of the board.
+        if (!session || session->devices().isEmpty() || !session->joints().settledUntil(timeMs))
+            return false;
+    }
+    return true;
 }
 
 QList<cfx::EndpointIdentity> PlantAgent::cfxEndpoints() {

@@ -78,6 +78,9 @@ private:
     [[nodiscard]] QString cfxHandleOf(const model::DeviceIdentity &device);
     [[nodiscard]] QList<cfx::EndpointIdentity> cfxEndpoints();
     [[nodiscard]] QList<model::DeviceIdentity> boardStations();
+    // The stations of boardStations() are all known and have ended every joint begun before
+    // `timeMs`.
+    [[nodiscard]] bool boardSettled(qint64 timeMs);
     void finishIfStopped();
 
     Publisher m_who;

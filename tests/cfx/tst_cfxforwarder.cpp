@@ -2,7 +2,7 @@
 // read by the independent Python consumer: in the journal's order, each message's UniqueID its
 // event's id, a clearing tied to its error, every event marked sent only once accepted, and
 // nothing lost or sent under two ids across a broker outage; and the work context's boards as
-// per-board transactions.
+// per-board transactions, a board's messages waiting for the joints still open at its end.
 #include "cfx/amqpsender.h"
 #include "cfx/cfxforwarder.h"
 #include "cfx/cfxmessages.h"
@@ -12,6 +12,7 @@
 #include "journal/journalreader.h"
 #include "model/workcontextjson.h"
 
+#include <QDateTime>
 #include <QSet>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -206,7 +207,7 @@ private Q_SLOTS:
                 consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), kMessages),
                 qPrintable(consumer.output()));
             AmqpSender sender;
-            CfxForwarder forwarder(journal, sender, handleOf, Codec::Gzip, stations);
+            CfxForwarder forwarder(journal, sender, handleOf, Codec::Gzip, {stations, {}});
             sender.start(
                 testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic")));
             QVERIFY2(consumer.finish(), qPrintable(consumer.output()));
@@ -261,6 +262,74 @@ private Q_SLOTS:
                 QCOMPARE(runIds, ids);
             }
         }
+    }
+
+    // A joint under way when the board changes belongs to the board that ends (the journal
+    // stamps it with the context of its start), but is journaled only once it ended: the board's
+    // messages wait until the stations say so, and then carry it.
+    void aBoardWaitsForTheJointsStillOpenAtItsEnd() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+        journal::Journal journal(path, testing::quickOptions());
+        QVERIFY(testing::waitOpened(journal));
+        const model::DeviceIdentity station = testing::sampleDevice(0);
+        bool settled = true;
+        qint64 askedAboutMs = 0;
+        const CfxForwarder::Boards boards{[&] { return QList<model::DeviceIdentity>{station}; },
+                                          [&](qint64 timeMs) {
+                                              askedAboutMs = timeMs;
+                                              return settled;
+                                          }};
+        CfxConsumer consumer;
+        QVERIFY2(consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), 4),
+                 qPrintable(consumer.output()));
+        AmqpSender sender;
+        CfxForwarder forwarder(journal, sender, handleOf, Codec::Raw, boards);
+        sender.start(
+            testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic")));
+        journal.setContext({QString(), QStringLiteral("SN-A"), QString()});
+        const qint64 namedMs = QDateTime::currentMSecsSinceEpoch(); // SN-A named by now
+        QVERIFY2(consumer.waitForMessages(1), qPrintable(consumer.output()));
+
+        settled = false; // a joint is under way
+        journal.setContext({QString(), QStringLiteral("SN-B"), QString()});
+        QTRY_VERIFY_WITH_TIMEOUT(askedAboutMs > 0, 10000);
+        const qint64 changeMs = askedAboutMs;
+        // It waits: nothing more within what a send takes on this broker (well under 500 ms).
+        QTest::qWait(1000);
+        QCOMPARE(consumer.messages().size(), 1);
+
+        // Ended after the change, begun before it, while SN-A was named.
+        journal.append(testing::sampleJoint(0, (namedMs + changeMs) / 2));
+        settled = true;
+        QVERIFY2(consumer.finish(), qPrintable(consumer.output()));
+        QVERIFY2(consumer.complaints().isEmpty(), qPrintable(consumer.complaints().join('\n')));
+        QStringList names;
+        for (int i = 0; i < consumer.messages().size(); ++i)
+            names << envelopeAt(consumer, i)
+                         .value(QStringLiteral("MessageName"))
+                         .toString()
+                         .section('.', -1);
+        QCOMPARE(names,
+                 (QStringList{"WorkStarted", "UnitsProcessed", "WorkCompleted", "WorkStarted"}));
+        const QJsonObject processed =
+            envelopeAt(consumer, 1).value(QStringLiteral("MessageBody")).toObject();
+        QCOMPARE(processed.value(QStringLiteral("CommonProcessData"))
+                     .toObject()
+                     .value(QStringLiteral("SolderPoints"))
+                     .toArray()
+                     .size(),
+                 1);
+        QCOMPARE(bodyField(envelopeAt(consumer, 3), QStringLiteral("PrimaryIdentifier")),
+                 QStringLiteral("SN-B"));
+        // The journal agrees: the joint is SN-A's.
+        journal::JournalReader reader;
+        QVERIFY(reader.open(path));
+        journal::JointFilter onA;
+        onA.boardSerial = QStringLiteral("SN-A");
+        const auto onBoardA = reader.countJoints(onA);
+        QVERIFY(onBoardA);
+        QCOMPARE(*onBoardA, qint64(1));
     }
 };
 

@@ -91,6 +91,12 @@ public:
     // Incomplete, and the port must settle again.
     [[nodiscard]] std::optional<JointRecord> gap(qint64 timeMs);
     [[nodiscard]] bool inJoint() const { return m_state == State::InJoint; }
+    // The earliest the open joint's start can be (the last reading within the band before it;
+    // its estimate lies after it); none outside a joint.
+    [[nodiscard]] std::optional<qint64> openSinceMs() const {
+        return inJoint() && !m_readings.empty() ? std::optional<qint64>(m_readings.front().timeMs)
+                                                : std::nullopt;
+    }
 
     [[nodiscard]] static JointVerdict judge(const JointRecord &joint, const JointLimits &limits);
 

@@ -128,4 +128,14 @@ QString JointWatcher::warningText(const JointRecord &joint, const JointLimits &l
     return {};
 }
 
+bool JointWatcher::settledUntil(qint64 timeMs) const {
+    for (const auto &[key, w] : m_watched) {
+        if (w.fedUntilMs < timeMs)
+            return false;
+        if (const std::optional<qint64> since = w.detector.openSinceMs(); since && *since < timeMs)
+            return false;
+    }
+    return true;
+}
+
 } // namespace tipscope::model

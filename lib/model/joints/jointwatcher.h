@@ -47,6 +47,11 @@ public:
     void setRules(const JointLimitRules &rules) { m_rules = rules; }
     [[nodiscard]] const JointLimitRules &rules() const { return m_rules; }
 
+    // Every joint begun before `timeMs` has ended (jointEnded() said it): each watched port was
+    // fed readings up to `timeMs` and has no joint open that began before it. A port whose
+    // readings stopped coming is not settled until they come again or its gap ends its joint.
+    [[nodiscard]] bool settledUntil(qint64 timeMs) const;
+
     // A joint's limits broken, in words for the event log ("port 1 joint: recovery 4.2 s,
     // limit 3.0 s"); empty for a joint within them or not judged.
     [[nodiscard]] static QString warningText(const JointRecord &joint, const JointLimits &limits);
