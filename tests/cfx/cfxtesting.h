@@ -8,6 +8,7 @@
 
 #include <QTest>
 #include <memory>
+#include <optional>
 
 namespace tipscope::testing {
 
@@ -17,11 +18,14 @@ inline QString cfxBrokerSkipReason() {
 }
 
 // The test case's RabbitMQ node, for an initTestCase(): skips the case where it cannot run, fails
-// it where it does not start.
-inline void startCfxBroker(std::unique_ptr<RabbitMqBroker> &broker) {
+// it where it does not start. With `tls`, it also listens with TLS.
+inline void startCfxBroker(std::unique_ptr<RabbitMqBroker> &broker,
+                           const std::optional<RabbitMqBroker::Tls> &tls = std::nullopt) {
     if (const QString why = cfxBrokerSkipReason(); !why.isEmpty())
         QSKIP(qPrintable(why));
     broker = std::make_unique<RabbitMqBroker>();
+    if (tls)
+        broker->setTls(*tls);
     QString error;
     QVERIFY2(broker->start(&error), qPrintable(error));
 }

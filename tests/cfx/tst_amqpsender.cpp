@@ -1,10 +1,14 @@
 // The AMQP 1.0 sender against a real RabbitMQ with its AMQP 1.0 plugin (one node for the whole
 // test), read by the independent Python consumer: what arrives is the CFX envelope with the
 // SDK's AMQP properties, a message counts only once the broker accepted it, and every wrong
-// setting gets one clear problem while the sender keeps trying.
+// setting gets one clear problem while the sender keeps trying. The node also listens with TLS,
+// asking for a client certificate: the sender connects with the right CA and its certificate,
+// and is refused, saying what to check, with another CA, without a certificate, or by an address
+// the broker's certificate does not name.
 #include "cfx/amqpsender.h"
 #include "cfx/cfxmessages.h"
 #include "cfxtesting.h"
+#include "testcertificates.h"
 
 #include <QJsonArray>
 #include <QSignalSpy>
@@ -15,11 +19,14 @@ using namespace tipscope;
 using namespace tipscope::cfx;
 using tipscope::testing::CfxConsumer;
 using tipscope::testing::RabbitMqBroker;
+using tipscope::testing::TestCertificates;
 
 class TstAmqpSender : public QObject {
     Q_OBJECT
 
     std::unique_ptr<RabbitMqBroker> m_broker;
+    TestCertificates m_certificates;
+    QString m_noTls; // why the TLS listener is not there
 
     static bool connect(AmqpSender &sender) {
         return QTest::qWaitFor([&] { return sender.state() == AmqpSender::State::Connected; },
@@ -27,7 +34,19 @@ class TstAmqpSender : public QObject {
     }
 
 private Q_SLOTS:
-    void initTestCase() { testing::startCfxBroker(m_broker); }
+    void initTestCase() {
+        m_noTls = TestCertificates::skipReason();
+        QString error;
+        if (m_noTls.isEmpty() && !m_certificates.generate(&error))
+            QFAIL(qPrintable(error));
+        if (!m_noTls.isEmpty()) {
+            testing::startCfxBroker(m_broker);
+            return;
+        }
+        testing::startCfxBroker(m_broker, RabbitMqBroker::Tls{m_certificates.caFile(),
+                                                              m_certificates.serverCertificate(),
+                                                              m_certificates.serverKey(), true});
+    }
     void cleanupTestCase() { m_broker.reset(); }
 
     void messagesArriveAsCfxWithTheSdkProperties() {
@@ -117,6 +136,59 @@ private Q_SLOTS:
         QVERIFY2(!text.contains(QLatin1String("guest")) || password != "guest", qPrintable(text));
         QVERIFY(sender.state() != AmqpSender::State::Connected);
         QCOMPARE(sender.send(AmqpMessage()), quint64(0));
+    }
+
+    void tlsChecksBothEnds_data() {
+        QTest::addColumn<QString>("host");
+        QTest::addColumn<bool>("otherCa");
+        QTest::addColumn<bool>("clientCertificate");
+        QTest::addColumn<bool>("connects");
+        QTest::newRow("its CA and a client certificate")
+            << QStringLiteral("localhost") << false << true << true;
+        QTest::newRow("another CA") << QStringLiteral("localhost") << true << true << false;
+        QTest::newRow("no client certificate")
+            << QStringLiteral("localhost") << false << false << false;
+        // The broker's certificate names localhost only.
+        QTest::newRow("an address the certificate does not name")
+            << QStringLiteral("127.0.0.1") << false << true << false;
+    }
+    void tlsChecksBothEnds() {
+        if (!m_noTls.isEmpty())
+            QSKIP(qPrintable(m_noTls));
+        QFETCH(QString, host);
+        QFETCH(bool, otherCa);
+        QFETCH(bool, clientCertificate);
+        QFETCH(bool, connects);
+        AmqpSender sender;
+        QSignalSpy problems(&sender, &AmqpSender::problem);
+        QSignalSpy accepted(&sender, &AmqpSender::accepted);
+        AmqpSender::Settings s =
+            testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic"));
+        s.host = host;
+        s.port = m_broker->tlsPort();
+        s.tls = true;
+        s.caFile = otherCa ? m_certificates.otherCaFile() : m_certificates.caFile();
+        if (clientCertificate) {
+            s.certFile = m_certificates.clientCertificate();
+            s.keyFile = m_certificates.clientKey();
+        }
+        sender.start(s);
+        QCOMPARE(sender.where(), QStringLiteral("amqps://%1:%2").arg(host).arg(s.port));
+        if (connects) {
+            QVERIFY2(connect(sender),
+                     qPrintable(problems.isEmpty() ? QStringLiteral("no problem said")
+                                                   : problems.at(0).at(0).toString()));
+            const QString handle = QStringLiteral("JBC.DDE.L1-2");
+            const quint64 tag = sender.send(
+                toAmqpMessage(envelopeOf(endpointShuttingDown(handle), handle), Codec::Raw));
+            QTRY_COMPARE_WITH_TIMEOUT(accepted.size(), 1, 20000);
+            QCOMPARE(accepted.at(0).at(0).toULongLong(), tag);
+            return;
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(problems.size() >= 1, 20000);
+        const QString text = problems.at(0).at(0).toString();
+        QVERIFY2(text.contains(QLatin1String("TLS failed")), qPrintable(text));
+        QVERIFY(sender.state() != AmqpSender::State::Connected);
     }
 
     void aBrokerOutageEndsInAReconnection() {

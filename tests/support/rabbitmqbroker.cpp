@@ -17,7 +17,7 @@ namespace {
 const QString kBin = QStringLiteral("/usr/lib/rabbitmq/bin/");
 const QString kServiceUser = QStringLiteral("rabbitmq");
 
-// Three ports at once, so none of them is handed out twice.
+// The ports at once, so none of them is handed out twice.
 QList<int> freeLoopbackPorts(int count) {
     QList<QTcpServer *> servers;
     QList<int> ports;
@@ -102,7 +102,37 @@ bool RabbitMqBroker::prepareFolder(QString *error) {
                       error) &&
            writeOwned(m_dir.filePath(QStringLiteral("enabled_plugins")), "[rabbitmq_amqp1_0].\n",
                       owner, error) &&
-           writeOwned(m_dir.filePath(QStringLiteral("rabbitmq-env.conf")), "", owner, error);
+           writeOwned(m_dir.filePath(QStringLiteral("rabbitmq-env.conf")), "", owner, error) &&
+           (!m_tls || writeTlsConfig(error));
+}
+
+bool RabbitMqBroker::writeTlsConfig(QString *error) {
+    // The node runs as its own user, which cannot read the test's folder: copies it owns.
+    const auto owner = QFileDevice::ReadOwner | QFileDevice::WriteOwner;
+    const auto copy = [&](const QString &from, const QString &name) {
+        QFile file(from);
+        if (!file.open(QIODevice::ReadOnly)) {
+            *error = QStringLiteral("cannot read %1: %2").arg(from, file.errorString());
+            return false;
+        }
+        return writeOwned(m_dir.filePath(name), file.readAll(), owner, error);
+    };
+    const QString conf = QStringLiteral("listeners.ssl.1 = 127.0.0.1:%1\n"
+                                        "ssl_options.cacertfile = %2\n"
+                                        "ssl_options.certfile = %3\n"
+                                        "ssl_options.keyfile = %4\n"
+                                        "ssl_options.verify = verify_peer\n"
+                                        "ssl_options.fail_if_no_peer_cert = %5\n")
+                             .arg(m_tlsPort)
+                             .arg(m_dir.filePath(QStringLiteral("tls-ca.crt")),
+                                  m_dir.filePath(QStringLiteral("tls-server.crt")),
+                                  m_dir.filePath(QStringLiteral("tls-server.key")),
+                                  m_tls->requireClientCertificate ? QStringLiteral("true")
+                                                                  : QStringLiteral("false"));
+    return copy(m_tls->caFile, QStringLiteral("tls-ca.crt")) &&
+           copy(m_tls->certificateFile, QStringLiteral("tls-server.crt")) &&
+           copy(m_tls->keyFile, QStringLiteral("tls-server.key")) &&
+           writeOwned(m_dir.filePath(QStringLiteral("rabbitmq.conf")), conf.toUtf8(), owner, error);
 }
 
 QStringList RabbitMqBroker::environment() const {
@@ -159,14 +189,16 @@ bool RabbitMqBroker::control(const QStringList &arguments, QString *error, int t
 bool RabbitMqBroker::start(QString *error) {
     if (m_running)
         return true;
-    const QList<int> ports = freeLoopbackPorts(3);
-    if (ports.size() != 3) {
+    const int needed = m_tls ? 4 : 3;
+    const QList<int> ports = freeLoopbackPorts(needed);
+    if (ports.size() != needed) {
         *error = QStringLiteral("no free loopback ports");
         return false;
     }
     m_amqpPort = ports[0];
     m_distPort = ports[1];
     m_epmdPort = ports[2];
+    m_tlsPort = m_tls ? ports[3] : 0;
     if (!prepareFolder(error))
         return false;
     const auto [program, args] = command(QStringLiteral("rabbitmq-server"), {});
