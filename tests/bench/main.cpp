@@ -5,6 +5,7 @@
 // a row to kSubcommands. Every run first prints the machine context (bench.* lines), then the
 // subcommand's figures, one "name: value unit" per line.
 #include "benchsupport.h"
+#include "cfxbench.h"
 #include "chartbench.h"
 #include "fleetbench.h"
 #include "fleetlivebench.h"
@@ -67,6 +68,11 @@ const Subcommand kSubcommands[] = {
      "messages a second, a broker outage's backlog and its drain, joints lost (--stations N, "
      "--seconds S, --outage-s O)",
      tipscope::bench::runPlantBench},
+    {"cfx",
+     "simulated stations, tipscope-agent with IPC-CFX and a RabbitMQ node, boards changing: "
+     "agent CPU with CFX on and off, latency to the consumer, an outage's drain, a SIGKILL, "
+     "messages lost and duplicated (--stations N, --seconds S, --outage-s O, --board-s B)",
+     tipscope::bench::runCfxBench},
 };
 
 void printUsage(QTextStream &s) {

@@ -105,30 +105,14 @@ int parseOptions(const QStringList &args, Options *o) {
 }
 
 void printAgentLog(testing::AgentProcess &agent) {
-    const QStringList lines = agent.log().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-    printNote(QStringLiteral("the agent's last words:\n") +
-              lines.mid(lines.size() - 20).join('\n'));
+    printNote(QStringLiteral("the agent's last words:\n") + lastLines(agent.log(), 20));
 }
 
 // Starts the broker, the subscriber, the stations and the agent, and waits until every device
 // says online. False, with the reason printed, when something did not come up.
 bool startPlant(Plant &plant, const Options &o) {
     plant.stations = startSimStations(o.stations, [&](int i) {
-        QStringList args{QStringLiteral("--model"),
-                         QStringLiteral("DME"),
-                         QStringLiteral("--tcp"),
-                         QStringLiteral("127.0.0.1:0"),
-                         QStringLiteral("--joints-per-minute"),
-                         QString::number(o.jointsPerMinute),
-                         QStringLiteral("--seed"),
-                         QString::number(i + 1),
-                         QStringLiteral("--pace"),
-                         QString::number(o.pace),
-                         QStringLiteral("--chunk"),
-                         QString::number(o.chunkMs)};
-        if (i % 2 == 1)
-            args << QStringLiteral("--feeder");
-        return args;
+        return plantStationArgs(i, o.jointsPerMinute, o.pace, o.chunkMs);
     });
     if (plant.stations.empty())
         return false;

@@ -64,4 +64,27 @@ std::vector<SimStation> startSimStations(int stations,
     return started;
 }
 
+QStringList plantStationArgs(int i, int jointsPerMinute, int pace, int chunkMs) {
+    QStringList args{QStringLiteral("--model"),
+                     QStringLiteral("DME"),
+                     QStringLiteral("--tcp"),
+                     QStringLiteral("127.0.0.1:0"),
+                     QStringLiteral("--joints-per-minute"),
+                     QString::number(jointsPerMinute),
+                     QStringLiteral("--seed"),
+                     QString::number(i + 1),
+                     QStringLiteral("--pace"),
+                     QString::number(pace),
+                     QStringLiteral("--chunk"),
+                     QString::number(chunkMs)};
+    if (i % 2 == 1)
+        args << QStringLiteral("--feeder");
+    return args;
+}
+
+QString lastLines(const QString &log, int count) {
+    const QStringList lines = log.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    return lines.mid(qMax(0, int(lines.size()) - count)).join(QLatin1Char('\n'));
+}
+
 } // namespace tipscope::bench

@@ -48,4 +48,12 @@ struct SimStation {
 [[nodiscard]] std::vector<SimStation>
 startSimStations(int stations, const std::function<QStringList(int)> &argsOf);
 
+// The plant benches' station `i` (from 0): a DME on TCP making `jointsPerMinute` random joints
+// on every port (seeded by i), paced like a `pace` baud wire and handing its answers over every
+// `chunkMs` (0: a byte at a time), with an SFR feeder on every other line.
+[[nodiscard]] QStringList plantStationArgs(int i, int jointsPerMinute, int pace, int chunkMs);
+
+// Of an agent's log, the last `count` lines, for a failure note.
+[[nodiscard]] QString lastLines(const QString &log, int count);
+
 } // namespace tipscope::bench

@@ -9,11 +9,12 @@ import argparse
 import gzip
 import json
 import sys
+import time
 import uuid
 
 from proton import Message
 from proton.handlers import MessagingHandler
-from proton.reactor import Container
+from proton.reactor import Backoff, Container
 
 ENVELOPE = ["MessageName", "Version", "TimeStamp", "UniqueID", "Source", "Target",
             "RequestID", "MessageBody"]
@@ -135,16 +136,18 @@ def check(message, envelope):
 
 
 class Consumer(MessagingHandler):
-    def __init__(self, url, source, count, timeout):
+    def __init__(self, url, source, count, timeout, retry_max_s=10):
         super().__init__()
         self.url, self.source, self.count, self.timeout = url, source, count, timeout
+        self.retry_max_s = retry_max_s
         self.received = 0
         self.failed = False
 
     def on_start(self, event):
         connection = event.container.connect(self.url, allowed_mechs="ANONYMOUS PLAIN",
                                              user="guest", password="guest",
-                                             allow_insecure_mechs=True)
+                                             allow_insecure_mechs=True,
+                                             reconnect=Backoff(max_delay=self.retry_max_s))
         event.container.create_receiver(connection, self.source)
         self.timer = event.container.schedule(self.timeout, self)
 
@@ -168,7 +171,8 @@ class Consumer(MessagingHandler):
         for sentence in check(message, envelope):
             print("BAD: %s: %s" % (envelope.get("MessageName"), sentence), flush=True)
         print(json.dumps({"subject": message.subject, "encoding": message.content_encoding,
-                          "envelope": envelope}), flush=True)
+                          "arrived_ms": int(time.time() * 1000), "envelope": envelope}),
+              flush=True)
         self.received += 1
         if self.received >= self.count:
             # Closed, not stopped: the container ends once the broker confirmed the close.
@@ -242,12 +246,14 @@ def main():
     parser.add_argument("--target")
     parser.add_argument("--send-to")
     parser.add_argument("--gzip", action="store_true")
+    parser.add_argument("--retry-max-s", type=float, default=10,
+                        help="the longest wait before connecting again after a loss")
     args = parser.parse_args()
     if args.request:
         consumer = Requester(args.url, args.source, args.count, args.timeout, args.request,
                              args.target, args.send_to, args.gzip)
     else:
-        consumer = Consumer(args.url, args.source, args.count, args.timeout)
+        consumer = Consumer(args.url, args.source, args.count, args.timeout, args.retry_max_s)
     try:
         Container(consumer).run()
     except Exception as error:  # said as a complaint, so the test shows it

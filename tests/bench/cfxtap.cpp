@@ -1,0 +1,132 @@
+#include "cfxtap.h"
+
+#include "benchsupport.h"
+
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSet>
+
+namespace tipscope::bench {
+
+namespace {
+
+const QString kPython = QStringLiteral("/usr/bin/python3"); // Debian's, which has the binding
+
+qint64 stampOf(const QString &text) {
+    const QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
+    return time.isValid() ? time.toMSecsSinceEpoch() : 0;
+}
+
+QStringList jointIdsOf(const QJsonObject &body) {
+    // UnitsProcessed: each unit's GenericProcessData holds one stage a joint (docs/cfx.md).
+    QStringList ids;
+    for (const QJsonValue &unit : body.value(QStringLiteral("UnitProcessData")).toArray()) {
+        const QJsonArray stages = unit.toObject()
+                                      .value(QStringLiteral("UnitProcessData"))
+                                      .toObject()
+                                      .value(QStringLiteral("StageData"))
+                                      .toArray();
+        for (const QJsonValue &stage : stages)
+            for (const QJsonValue &parameter :
+                 stage.toObject().value(QStringLiteral("Parameters")).toArray())
+                if (parameter.toObject().value(QStringLiteral("Name")).toString() ==
+                    QLatin1String("JointId"))
+                    ids.append(parameter.toObject().value(QStringLiteral("Value")).toString());
+    }
+    return ids;
+}
+
+} // namespace
+
+CfxTap::~CfxTap() {
+    if (m_process.state() != QProcess::NotRunning) {
+        m_process.kill();
+        m_process.waitForFinished(5000);
+    }
+}
+
+QString CfxTap::skipReason() {
+    QProcess probe;
+    probe.start(kPython, {QStringLiteral("-c"), QStringLiteral("import proton")});
+    if (!probe.waitForFinished(20000) || probe.exitCode() != 0)
+        return QStringLiteral("python3-qpid-proton is not installed for /usr/bin/python3");
+    return {};
+}
+
+bool CfxTap::start(const QString &url, const QString &source, QString *error) {
+    QObject::connect(&m_process, &QProcess::readyReadStandardOutput, &m_process,
+                     [this] { read(); });
+    m_process.setProcessChannelMode(QProcess::MergedChannels);
+    // As many messages as a run can make, and a deadline past any run: the bench ends it.
+    m_process.start(kPython, {QStringLiteral(CFX_CONSUMER), QStringLiteral("--url"), url,
+                              QStringLiteral("--source"), source, QStringLiteral("--count"),
+                              QStringLiteral("1000000000"), QStringLiteral("--timeout"),
+                              QStringLiteral("86400"), QStringLiteral("--retry-max-s"),
+                              QStringLiteral("0.5")});
+    if (!runUntil([this] { return m_ready || m_process.state() == QProcess::NotRunning; }, 30000) ||
+        !m_ready) {
+        *error = QStringLiteral("the CFX consumer did not attach to %1").arg(source);
+        return false;
+    }
+    return true;
+}
+
+void CfxTap::read() {
+    m_pending += m_process.readAll();
+    qsizetype end;
+    while ((end = m_pending.indexOf('\n')) >= 0) {
+        take(m_pending.left(end).trimmed());
+        m_pending.remove(0, end + 1);
+    }
+}
+
+void CfxTap::take(const QByteArray &line) {
+    if (line == "READY") {
+        m_ready = true;
+        return;
+    }
+    if (line.startsWith("BAD: transport")) {
+        ++m_transportErrors; // the broker's outage, ridden out by connecting again
+        return;
+    }
+    if (line.startsWith("BAD:")) {
+        m_complaints.append(QString::fromUtf8(line));
+        return;
+    }
+    if (!line.startsWith('{'))
+        return;
+    const QJsonObject printed = QJsonDocument::fromJson(line).object();
+    const QJsonObject envelope = printed.value(QStringLiteral("envelope")).toObject();
+    const QJsonObject body = envelope.value(QStringLiteral("MessageBody")).toObject();
+    TappedMessage m;
+    m.name = envelope.value(QStringLiteral("MessageName")).toString();
+    m.source = envelope.value(QStringLiteral("Source")).toString();
+    m.uniqueId = envelope.value(QStringLiteral("UniqueID")).toString();
+    m.stampMs = stampOf(envelope.value(QStringLiteral("TimeStamp")).toString());
+    m.arrivedMs = qint64(printed.value(QStringLiteral("arrived_ms")).toDouble());
+    // The SDK spells it TransactionID in WorkStarted and TransactionId in the others.
+    m.transaction = body.value(QStringLiteral("TransactionID")).toString();
+    if (m.transaction.isEmpty())
+        m.transaction = body.value(QStringLiteral("TransactionId")).toString();
+    if (m.name == QLatin1String("CFX.Production.WorkStarted")) {
+        m.board = body.value(QStringLiteral("PrimaryIdentifier")).toString();
+        QStringList &at = m_startedAt[m.board];
+        if (!at.contains(m.source))
+            at.append(m.source);
+    }
+    if (m.name == QLatin1String("CFX.Production.Processing.UnitsProcessed"))
+        m.jointIds = jointIdsOf(body);
+    m_messages.append(m);
+}
+
+int CfxTap::connectedSince(qint64 sinceMs) const {
+    QSet<QString> endpoints;
+    for (const TappedMessage &m : m_messages)
+        if (m.arrivedMs >= sinceMs && m.name == QLatin1String("CFX.EndpointConnected"))
+            endpoints.insert(m.source);
+    return int(endpoints.size());
+}
+
+} // namespace tipscope::bench
