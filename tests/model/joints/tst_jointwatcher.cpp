@@ -1,6 +1,7 @@
 // Joints found live: the demo station at work (a joint on port 1 every 15 s) through the real
 // session, its telemetry and the watcher. Each joint names the device and port, is measured and
-// judged; one outside its limits is also a warning in the event log, naming its port.
+// judged; one outside its limits is also a warning in the event log, naming its port. And when
+// every joint begun before a moment has ended, which is what a board's end waits for.
 #include "model/joints/jointwatcher.h"
 #include "model/session.h"
 #include "sim/demoactivity.h"
@@ -23,6 +24,7 @@ class TestJointWatcher : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void theDemoStationsJointsAreFoundMeasuredAndJudged();
+    void settledOnceReadPastAMomentWithNoJointBegunBefore();
 };
 
 void TestJointWatcher::theDemoStationsJointsAreFoundMeasuredAndJudged() {
@@ -72,6 +74,40 @@ void TestJointWatcher::theDemoStationsJointsAreFoundMeasuredAndJudged() {
     QCOMPARE(warning->port, 1);
     QCOMPARE(warning->severity, Event::Severity::Warning);
     QCOMPARE(warning->kind, Event::Kind::Joint);
+}
+
+// Readings every 100 ms on one port, written straight into the telemetry: a settled tip, a dip
+// and its return.
+void TestJointWatcher::settledOnceReadPastAMomentWithNoJointBegunBefore() {
+    Telemetry telemetry;
+    JointWatcher watcher(telemetry);
+    QSignalSpy joints(&watcher, &JointWatcher::jointEnded);
+    QObject owner;
+    const TelemetryKey key = QStringLiteral("line/port1");
+    (void)telemetry.ensureBuffer(key, {QStringLiteral("tip"), QStringLiteral("setpoint"),
+                                       QStringLiteral("power"), QStringLiteral("status")});
+    watcher.watch(&owner, key, {DeviceIdentity(), 1, [] { return QStringLiteral("T245"); }, 0.1});
+    constexpr qint64 kT0 = 1'700'000'000'000;
+    qint64 t = kT0;
+    const auto read = [&](int tip, int power) {
+        (void)telemetry.append(key, t, {tip, 350, power * 10, 0}); // status 0: working
+        telemetry.notifyNow();
+        t += 100;
+    };
+    for (int i = 0; i < 40; ++i) // 4 s in the band: settled
+        read(350, 10);
+    QVERIFY(watcher.settledUntil(t - 100));
+    QVERIFY(!watcher.settledUntil(t + 500)); // not read that far yet
+
+    const qint64 dipMs = t;
+    for (int tip : {330, 320, 325, 332, 338, 343}) // a joint under way
+        read(tip, 90);
+    QVERIFY(!watcher.settledUntil(dipMs + 100)); // it began before, and is open
+    QVERIFY(joints.isEmpty());
+    for (int i = 0; i < 30; ++i) // back in the band, past the tail its fit reads
+        read(350, 20);
+    QCOMPARE(joints.size(), 1);
+    QVERIFY(watcher.settledUntil(dipMs + 100));
 }
 
 QTEST_GUILESS_MAIN(TestJointWatcher)
