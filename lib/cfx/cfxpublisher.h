@@ -11,9 +11,8 @@
 // included); with a request address they also answer requests (cfxrequests.h) and the journal's
 // records by handleOf(); `boards` says which stations work on the board the shared work context
 // names and when their joints are in (the forwarder's per-board messages). All three come from
-// the front end, which
-// knows the workspace. stop() sends the goodbyes, waits for the broker to accept them (at most
-// `timeoutMs`) and emits stopped(). The journal must outlive the publisher.
+// the front end, which knows the workspace. stop() sends the goodbyes, waits for the broker to
+// accept them (at most `timeoutMs`) and emits stopped(). The journal must outlive the publisher.
 #pragma once
 
 #include "amqpsender.h"

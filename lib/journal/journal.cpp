@@ -32,6 +32,24 @@ bool post(JournalShared &shared, JournalWriter *writer, Request request) {
     return true;
 }
 
+// When a record began: a joint's start; an event's own time.
+qint64 startOf(const PendingJoint &pending) {
+    return pending.joint.startMs;
+}
+qint64 startOf(const PendingEvent &pending) {
+    return pending.event.timeMs;
+}
+
+// The context in force at `timeMs`: an earlier one that ended after it, when that was within
+// Journal::kJointSpanMs (a live joint's start); else the current one, as for a record stamped
+// with another clock than the wall's (a recording played back). Called with the mutex held.
+model::WorkContext contextAt(const JournalShared &shared, qint64 timeMs) {
+    for (const auto &[endedMs, context] : shared.earlierContexts)
+        if (timeMs < endedMs)
+            return endedMs - timeMs <= Journal::kJointSpanMs ? context : shared.context;
+    return shared.context;
+}
+
 } // namespace
 
 Journal::Journal(const QString &path, const JournalOptions &options, QObject *parent)
@@ -63,28 +81,6 @@ QString Journal::defaultPath() {
     const QString data = QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation);
     return QDir(data).filePath(QStringLiteral("TipScope/TipScope/journal.sqlite"));
 }
-
-namespace {
-
-// When a record began: a joint's start; an event's own time.
-qint64 startOf(const PendingJoint &pending) {
-    return pending.joint.startMs;
-}
-qint64 startOf(const PendingEvent &pending) {
-    return pending.event.timeMs;
-}
-
-// The context in force at `timeMs`: an earlier one that ended after it, when that was within
-// Journal::kJointSpanMs (a live joint's start); else the current one, as for a record stamped
-// with another clock than the wall's (a recording played back). Called with the mutex held.
-model::WorkContext contextAt(const JournalShared &shared, qint64 timeMs) {
-    for (const auto &[endedMs, context] : shared.earlierContexts)
-        if (timeMs < endedMs)
-            return endedMs - timeMs <= Journal::kJointSpanMs ? context : shared.context;
-    return shared.context;
-}
-
-} // namespace
 
 QUuid Journal::append(const model::JointRecord &joint) {
     return enqueue(PendingJoint{QUuid(), {}, joint});
