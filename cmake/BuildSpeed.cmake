@@ -83,10 +83,11 @@ endfunction()
 
 tipscope_add_pch(tipscope_pch_core HEADERS ${TIPSCOPE_CORE_PCH} LIBS Qt6::Core)
 
-# The targets `target` links, directly or through the project's own libraries.
-function(tipscope_link_closure target out)
+# The targets that `targets` (one or a list) link, directly or through the project's own
+# libraries, with themselves.
+function(tipscope_link_closure targets out)
     set(seen)
-    set(todo ${target})
+    set(todo ${targets})
     while(todo)
         list(POP_FRONT todo current)
         if(current IN_LIST seen OR NOT TARGET ${current})

@@ -9,5 +9,5 @@ tipscope_add_test(tst_newcatalogentry SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_newc
                   LIBS tipscope_gui tipscope_demosupport TIMEOUT 300)
 # The ALE's dispensing page against tipscope-sim serving an ALE over TCP.
 tipscope_add_test(tst_dispensingpage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_dispensingpage.cpp
-                  LIBS tipscope_gui tipscope_testsupport tipscope_sim TIMEOUT 300)
-add_dependencies(tst_dispensingpage tipscope-sim)
+                  LIBS tipscope_gui tipscope_testsupport tipscope_sim TIMEOUT 300
+    DEPENDS tipscope-sim)

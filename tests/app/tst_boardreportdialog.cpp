@@ -3,6 +3,7 @@
 #include "dialogs/boardreportdialog.h"
 #include "journalfixture.h"
 #include "mainwindow.h"
+#include "testmain.h"
 
 #include <QLabel>
 #include <QLineEdit>
@@ -10,6 +11,8 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_boardreportdialog {
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -78,5 +81,7 @@ void TestBoardReportDialog::anUnknownOrMissingSerialIsSaidAndNothingWritten() {
     QVERIFY(!QFile::exists(pdf));
 }
 
-QTEST_MAIN(TestBoardReportDialog)
+TIPSCOPE_TEST_MAIN(TestBoardReportDialog)
+
+} // namespace tst_boardreportdialog
 #include "tst_boardreportdialog.moc"

@@ -6,6 +6,7 @@
 #include "charts/chartwidget.h"
 #include "i18n/translations.h"
 #include "mainwindow.h"
+#include "testmain.h"
 
 #include <QComboBox>
 #include <QMouseEvent>
@@ -18,6 +19,8 @@
 #include <QTest>
 #include <QToolButton>
 #include <QTranslator>
+
+namespace tst_chartslayout {
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -280,5 +283,7 @@ void TestChartsLayout::aPanePerPortSettlesWithinThePage() {
     }
 }
 
-QTEST_MAIN(TestChartsLayout)
+TIPSCOPE_TEST_MAIN(TestChartsLayout)
+
+} // namespace tst_chartslayout
 #include "tst_chartslayout.moc"

@@ -8,6 +8,7 @@
 #include "model/feedermodel.h"
 #include "model/recording/chartcsvreader.h"
 #include "support/fifowriter.h"
+#include "testmain.h"
 
 #include "demosession.h"
 #include "sim/simline.h"
@@ -28,6 +29,8 @@
 #include <QToolButton>
 #include <QWheelEvent>
 #include <memory>
+
+namespace tst_chartspage {
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -470,5 +473,7 @@ void TestChartsPage::aLongRecordingNameNeverWidensThePage() {
     m_page->stopRecording();
 }
 
-QTEST_MAIN(TestChartsPage)
+TIPSCOPE_TEST_MAIN(TestChartsPage)
+
+} // namespace tst_chartspage
 #include "tst_chartspage.moc"

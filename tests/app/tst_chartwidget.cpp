@@ -3,11 +3,14 @@
 // gap in the data stays a gap, and a sparse curve is drawn as a line between its points.
 #include "charts/chartwidget.h"
 #include "model/chart/chartframe.h"
+#include "testmain.h"
 
 #include <QScreen>
 #include <QTest>
 #include <cmath>
 #include <tuple>
+
+namespace tst_chartwidget {
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -249,5 +252,7 @@ void TestChartWidget::anAlarmLabelNeverCoversACurve() {
     QCOMPARE(m_chart->bandLabelRects().size(), 0);
 }
 
-QTEST_MAIN(TestChartWidget)
+TIPSCOPE_TEST_MAIN(TestChartWidget)
+
+} // namespace tst_chartwidget
 #include "tst_chartwidget.moc"

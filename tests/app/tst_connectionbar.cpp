@@ -2,6 +2,7 @@
 // ("Disconnected") is not followed by the session's or the line's text saying it again
 // ("disconnected"), whose own first words repeat it.
 #include "connectionbar.h"
+#include "testmain.h"
 
 #include "i18n/translations.h"
 
@@ -9,10 +10,12 @@
 #include <QTest>
 #include <QTranslator>
 
+Q_DECLARE_METATYPE(tipscope::model::Session::State)
+
+namespace tst_connectionbar {
+
 using namespace tipscope;
 using model::Session;
-
-Q_DECLARE_METATYPE(tipscope::model::Session::State)
 
 class TestConnectionBar : public QObject {
     Q_OBJECT
@@ -85,5 +88,7 @@ void TestConnectionBar::theStateLineNamesTheStateOnce() {
         QVERIFY2(shown.contains(argument), qPrintable(shown)); // the detail is kept
 }
 
-QTEST_MAIN(TestConnectionBar)
+TIPSCOPE_TEST_MAIN(TestConnectionBar)
+
+} // namespace tst_connectionbar
 #include "tst_connectionbar.moc"

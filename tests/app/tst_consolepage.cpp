@@ -3,6 +3,7 @@
 // tests/model/tst_framecomposer.cpp.
 #include "pages/consolepage.h"
 #include "pages/framebuilder.h"
+#include "testmain.h"
 
 #include "demosession.h"
 #include "link/line.h"
@@ -22,6 +23,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <memory>
+
+namespace tst_consolepage {
 
 using namespace tipscope;
 using tipscope::gui::ConsolePage;
@@ -398,5 +401,7 @@ void TestConsolePage::theRowCountSaysHowManyRowsAreKept() {
         qPrintable(QStringLiteral("%1 px for \"%2\"").arg(count->width()).arg(count->text())));
 }
 
-QTEST_MAIN(TestConsolePage)
+TIPSCOPE_TEST_MAIN(TestConsolePage)
+
+} // namespace tst_consolepage
 #include "tst_consolepage.moc"

@@ -1,6 +1,7 @@
 // CountersPage on a real Session in demo mode: the simulated DME at 01 (port 1 starts at 1200
 // plugged hours) and the SFR at 10 (partial plugged hours start at 12).
 #include "pages/counterspage.h"
+#include "testmain.h"
 
 #include "demosession.h"
 #include "protocol/frame.h"
@@ -15,6 +16,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+
+namespace tst_counterspage {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -338,5 +341,7 @@ void TestCountersPage::monitorOnlyDisablesThePartialResets() {
         QVERIFY(resetButton(code)->isEnabled());
 }
 
-QTEST_MAIN(TestCountersPage)
+TIPSCOPE_TEST_MAIN(TestCountersPage)
+
+} // namespace tst_counterspage
 #include "tst_counterspage.moc"

@@ -1,9 +1,12 @@
 // DeferredRefresh: a widget hidden behind another page of a shown window refreshes once, when it
 // is shown again; a visible widget, or one whose window is not shown at all, refreshes at once.
+#include "testmain.h"
 #include "widgets/deferredrefresh.h"
 
 #include <QStackedWidget>
 #include <QTest>
+
+namespace tst_deferredrefresh {
 
 using tipscope::gui::DeferredRefresh;
 
@@ -111,5 +114,7 @@ void TestDeferredRefresh::aRefreshEndsWithItsOwner() {
     QCOMPARE(refreshes, 0);
 }
 
-QTEST_MAIN(TestDeferredRefresh)
+TIPSCOPE_TEST_MAIN(TestDeferredRefresh)
+
+} // namespace tst_deferredrefresh
 #include "tst_deferredrefresh.moc"

@@ -2,6 +2,7 @@
 // the stations whose catalog entries have dispensing settings, shows them with the dispensing
 // status, length and cycles, and starts and stops the wire feed.
 #include "pages/dispensingpage.h"
+#include "testmain.h"
 #include "widgets/parametereditor.h"
 
 #include "model/simfixture.h"
@@ -9,6 +10,8 @@
 
 #include <QLabel>
 #include <QTest>
+
+namespace tst_dispensingpage {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -111,5 +114,7 @@ void TestDispensingPage::startAndStopReachTheStation() {
     QTRY_VERIFY_WITH_TIMEOUT(liveText().startsWith(QStringLiteral("Stopped · ")), kReadMs);
 }
 
-QTEST_MAIN(TestDispensingPage)
+TIPSCOPE_TEST_MAIN(TestDispensingPage)
+
+} // namespace tst_dispensingpage
 #include "tst_dispensingpage.moc"

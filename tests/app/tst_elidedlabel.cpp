@@ -1,9 +1,12 @@
 // ElidedLabel shows its whole text when given the width it asks for, in any font and size; at its
 // minimum a long text is cut with "…" and still shows some of itself; a short text never asks for
 // more room than it needs.
+#include "testmain.h"
 #include "widgets/elidedlabel.h"
 
 #include <QTest>
+
+namespace tst_elidedlabel {
 
 using namespace tipscope::gui;
 
@@ -96,5 +99,7 @@ void TestElidedLabel::aShortTextAsksNoMoreThanItself() {
     QCOMPARE(label.text(), QStringLiteral("ab"));
 }
 
-QTEST_MAIN(TestElidedLabel)
+TIPSCOPE_TEST_MAIN(TestElidedLabel)
+
+} // namespace tst_elidedlabel
 #include "tst_elidedlabel.moc"

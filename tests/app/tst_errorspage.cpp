@@ -1,6 +1,7 @@
 // ErrorsPage on a real Session in demo mode: the simulated DME at 01 and SFR at 10, with errors
 // and alarms injected into the simulator.
 #include "pages/errorspage.h"
+#include "testmain.h"
 
 #include "demosession.h"
 #include "sim/simline.h"
@@ -18,6 +19,8 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_errorspage {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -432,5 +435,7 @@ void TestErrorsPage::whatToCheckLeavesTheHistoryItsRows() {
                                 .arg(view->viewport()->height() / rowHeight)));
 }
 
-QTEST_MAIN(TestErrorsPage)
+TIPSCOPE_TEST_MAIN(TestErrorsPage)
+
+} // namespace tst_errorspage
 #include "tst_errorspage.moc"

@@ -1,6 +1,7 @@
 // FeederPage on a real Session in demo mode (the simulated SFR at 10): Apply is on only with a
 // value to write and none refused, and Revert discards what was typed, refused or not.
 #include "pages/feederpage.h"
+#include "testmain.h"
 #include "widgets/parametereditor.h"
 
 #include "sim/simfeeder.h"
@@ -12,6 +13,8 @@
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QTest>
+
+namespace tst_feederpage {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -102,5 +105,7 @@ void TestFeederPage::revertDiscardsARefusedValueAndAnEdit() {
     QVERIFY(!button("revert")->isEnabled());
 }
 
-QTEST_MAIN(TestFeederPage)
+TIPSCOPE_TEST_MAIN(TestFeederPage)
+
+} // namespace tst_feederpage
 #include "tst_feederpage.moc"

@@ -5,6 +5,7 @@
 // widens; a tile repaints only when what it shows changed, and says how late it was.
 #include "pages/fleet/fleetpage.h"
 #include "pages/fleet/fleettilewidget.h"
+#include "testmain.h"
 
 #include "model/workspace/workspace.h"
 
@@ -20,6 +21,8 @@
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTest>
+
+namespace tst_fleetpage {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -307,5 +310,7 @@ void TestFleetPage::aLineStillConnectingSaysSoNotThatItLooksForDevices() {
     QVERIFY(!tile->shown().downSinceMs); // not down: no "since"
 }
 
-QTEST_MAIN(TestFleetPage)
+TIPSCOPE_TEST_MAIN(TestFleetPage)
+
+} // namespace tst_fleetpage
 #include "tst_fleetpage.moc"

@@ -2,10 +2,13 @@
 // QT_QPA_PLATFORM): --help and --version print and exit 0, an unknown option is refused with its
 // error, and a plain start says there is no display instead of aborting.
 #include "programrun.h"
+#include "testmain.h"
 
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_guicommandline {
 
 using namespace tipscope;
 
@@ -79,5 +82,7 @@ void TestGuiCommandLine::aWorkspaceThatCannotBeOpenedIsRefusedWithTheReason() {
     QVERIFY2(r.err.contains(path), qPrintable(r.err));
 }
 
-QTEST_MAIN(TestGuiCommandLine)
+TIPSCOPE_TEST_MAIN(TestGuiCommandLine)
+
+} // namespace tst_guicommandline
 #include "tst_guicommandline.moc"

@@ -5,6 +5,7 @@
 #include "charts/chartspage.h"
 #include "pages/jointcharts.h"
 #include "pages/jointspage.h"
+#include "testmain.h"
 
 #include "i18n/translations.h"
 #include "journal/journal.h"
@@ -20,6 +21,8 @@
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_jointspage {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -371,5 +374,7 @@ void TestJointsPage::liveJointsAreListedOnceAndOpenTheChartsAtTheirMoment() {
                             .arg(live.endMs)));
 }
 
-QTEST_MAIN(TestJointsPage)
+TIPSCOPE_TEST_MAIN(TestJointsPage)
+
+} // namespace tst_jointspage
 #include "tst_jointspage.moc"

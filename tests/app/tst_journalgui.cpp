@@ -5,6 +5,7 @@
 #include "dialogs/workcontextdialog.h"
 #include "journalstatusbutton.h"
 #include "mainwindow.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 #include "journal/workcontextfile.h"
@@ -21,6 +22,8 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_journalgui {
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -114,5 +117,7 @@ void TestJournalGui::theLimitsDialogRefusesABadRuleAndSavesAGoodOne() {
     QCOMPARE(saved.value().limitsFor(1, QStringLiteral("C470")).maxDipK, 80);
 }
 
-QTEST_MAIN(TestJournalGui)
+TIPSCOPE_TEST_MAIN(TestJournalGui)
+
+} // namespace tst_journalgui
 #include "tst_journalgui.moc"

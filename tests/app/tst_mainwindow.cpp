@@ -6,6 +6,7 @@
 #include "pages/overviewpage.h"
 #include "pages/portcard.h"
 #include "pages/settingspage.h"
+#include "testmain.h"
 #include "widgets/parametereditor.h"
 #include "widgets/startfolder.h"
 
@@ -21,6 +22,8 @@
 #include <QTest>
 #include <QTranslator>
 #include <QTreeWidgetItemIterator>
+
+namespace tst_mainwindow {
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -237,5 +240,7 @@ void TestMainWindow::fileDialogsOfferAFolderThatExistsOnAFreshAccount() {
              QDir(home.filePath(QStringLiteral("Documents"))).canonicalPath());
 }
 
-QTEST_MAIN(TestMainWindow)
+TIPSCOPE_TEST_MAIN(TestMainWindow)
+
+} // namespace tst_mainwindow
 #include "tst_mainwindow.moc"

@@ -10,6 +10,7 @@
 #include "pages/fleet/fleettilewidget.h"
 #include "pages/jointspage.h"
 #include "pages/page.h"
+#include "testmain.h"
 
 #include "i18n/translations.h"
 #include "model/workspace/workspacefile.h"
@@ -18,6 +19,8 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_mainwindowworkspace {
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -228,5 +231,7 @@ void TestMainWindowWorkspace::theSavedWorkspaceReopensAtTheNextStartUntilItIsClo
     QCOMPARE(w.workspace().count(), 0);
 }
 
-QTEST_MAIN(TestMainWindowWorkspace)
+TIPSCOPE_TEST_MAIN(TestMainWindowWorkspace)
+
+} // namespace tst_mainwindowworkspace
 #include "tst_mainwindowworkspace.moc"

@@ -5,6 +5,7 @@
 // and refuses them; the pages show them all the same, as not read.
 #include "pages/counterspage.h"
 #include "pages/settingspage.h"
+#include "testmain.h"
 #include "widgets/parametereditor.h"
 
 #include "demosession.h"
@@ -15,6 +16,8 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTest>
+
+namespace tst_newcatalogentry {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -129,5 +132,7 @@ void TestNewCatalogEntry::aNewFeederCounterPairIsARowWithItsResetButton() {
     QVERIFY(reset->isEnabled());
 }
 
-QTEST_MAIN(TestNewCatalogEntry)
+TIPSCOPE_TEST_MAIN(TestNewCatalogEntry)
+
+} // namespace tst_newcatalogentry
 #include "tst_newcatalogentry.moc"

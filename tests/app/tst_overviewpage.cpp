@@ -7,6 +7,7 @@
 #include "mainwindow.h"
 #include "pages/overviewpage.h"
 #include "pages/portcard.h"
+#include "testmain.h"
 #include "widgets/sparkline.h"
 
 #include "link/simtransport.h"
@@ -27,6 +28,8 @@
 #include <QStandardPaths>
 #include <QTcpServer>
 #include <QTest>
+
+namespace tst_overviewpage {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -346,5 +349,7 @@ void TestOverviewPage::thePowerIsWrittenBesideItsBarNotOnTheFill() {
     QTRY_VERIFY(text->width() >= text->fontMetrics().horizontalAdvance(text->text()));
 }
 
-QTEST_MAIN(TestOverviewPage)
+TIPSCOPE_TEST_MAIN(TestOverviewPage)
+
+} // namespace tst_overviewpage
 #include "tst_overviewpage.moc"

@@ -3,6 +3,7 @@
 // range is never clamped: it stays as typed, refused, with the reason and the allowed range under
 // the field, and nothing becomes an edit until a value is allowed.
 #include "../model/simfixture.h"
+#include "testmain.h"
 #include "widgets/parametereditor.h"
 
 #include "support/typing.h"
@@ -10,6 +11,8 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QTest>
+
+namespace tst_parametereditor {
 
 using namespace tipscope;
 using tipscope::gui::ParameterEditor;
@@ -128,5 +131,7 @@ void TestParameterEditor::aDisabledValueShowsADashAndEnablingItStartsAtTheLowest
     QCOMPARE(delay->edit(), std::optional<qint64>(delay->minimum()));
 }
 
-QTEST_MAIN(TestParameterEditor)
+TIPSCOPE_TEST_MAIN(TestParameterEditor)
+
+} // namespace tst_parametereditor
 #include "tst_parametereditor.moc"

@@ -11,6 +11,7 @@
 #include "pages/fleet/remotedevicepage.h"
 #include "plant/remotehistory.h"
 #include "plant/remotetile.h"
+#include "testmain.h"
 
 #include "../mqtt/mqtttesting.h"
 #include "../plant/agentprocess.h"
@@ -18,6 +19,8 @@
 
 #include <QStackedWidget>
 #include <QTest>
+
+namespace tst_plantview {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -130,5 +133,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestPlantView)
+TIPSCOPE_TEST_MAIN(TestPlantView)
+
+} // namespace tst_plantview
 #include "tst_plantview.moc"

@@ -2,10 +2,13 @@
 // stores it in milliseconds as before; a stored interval that is not whole seconds is kept
 // unless the field is changed. The journal's retention reads in days, 0 as "Keep everything".
 #include "dialogs/preferencesdialog.h"
+#include "testmain.h"
 
 #include <QLabel>
 #include <QSpinBox>
 #include <QTest>
+
+namespace tst_preferencesdialog {
 
 using namespace tipscope;
 
@@ -77,5 +80,7 @@ void TestPreferencesDialog::theJournalRetentionReadsInDaysAndZeroKeepsEverything
     QCOMPARE(dialog.journalRetentionDays(), 90);
 }
 
-QTEST_MAIN(TestPreferencesDialog)
+TIPSCOPE_TEST_MAIN(TestPreferencesDialog)
+
+} // namespace tst_preferencesdialog
 #include "tst_preferencesdialog.moc"

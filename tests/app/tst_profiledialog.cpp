@@ -5,8 +5,11 @@
 // row names its setting's tool and port.
 #include "../model/simfixture.h"
 #include "dialogs/profiledialog.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_profiledialog {
 
 using namespace tipscope;
 using tipscope::gui::ProfileDialog;
@@ -121,5 +124,7 @@ void TestProfileDialog::afterAnApplyTheTableShowsTheDeviceAsItNowIs() {
     QCOMPARE(dialog.cellText(0, 3), QStringLiteral("✓ changed from 350 °C"));
 }
 
-QTEST_MAIN(TestProfileDialog)
+TIPSCOPE_TEST_MAIN(TestProfileDialog)
+
+} // namespace tst_profiledialog
 #include "tst_profiledialog.moc"

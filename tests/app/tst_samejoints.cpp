@@ -8,6 +8,7 @@
 #include "mainwindow.h"
 #include "mosquittobroker.h"
 #include "ptyfixtures.h"
+#include "testmain.h"
 
 #include "../mqtt/mqtttesting.h"
 
@@ -20,6 +21,8 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_samejoints {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -178,5 +181,7 @@ void TestSameJoints::theWindowTheCommandLineAndTheAgentJournalTheSameJoints() {
                  QStringLiteral("window:\n%1\nagent:\n%2").arg(describe(window), describe(agent))));
 }
 
-QTEST_MAIN(TestSameJoints)
+TIPSCOPE_TEST_MAIN(TestSameJoints)
+
+} // namespace tst_samejoints
 #include "tst_samejoints.moc"

@@ -2,6 +2,7 @@
 // the line is down and after it is back, what a refused value looks like and how Revert and
 // Refresh clear it, and what saving a profile says and writes.
 #include "pages/settingspage.h"
+#include "testmain.h"
 #include "widgets/parametereditor.h"
 
 #include "link/simtransport.h"
@@ -18,6 +19,8 @@
 #include <QLineEdit>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_settingspage {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -266,5 +269,7 @@ void TestSettingsPage::theSavedProfileMessageGoesWithTheNextAction() {
     QTRY_VERIFY2(!m_page->noticeText().contains(path), qPrintable(m_page->noticeText()));
 }
 
-QTEST_MAIN(TestSettingsPage)
+TIPSCOPE_TEST_MAIN(TestSettingsPage)
+
+} // namespace tst_settingspage
 #include "tst_settingspage.moc"

@@ -9,6 +9,7 @@
 #include "mainwindow.h"
 #include "pages/feederpage.h"
 #include "pages/settingspage.h"
+#include "testmain.h"
 #include "widgets/elidedlabel.h"
 #include "widgets/parametereditor.h"
 
@@ -29,6 +30,8 @@
 #include <QTest>
 #include <QToolButton>
 #include <QTranslator>
+
+namespace tst_textfits {
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -310,5 +313,7 @@ void TestTextFits::aRefusalShowsItsWholeReasonUnderTheFieldAt1280x720() {
     QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
 }
 
-QTEST_MAIN(TestTextFits)
+TIPSCOPE_TEST_MAIN(TestTextFits)
+
+} // namespace tst_textfits
 #include "tst_textfits.moc"

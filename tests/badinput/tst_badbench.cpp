@@ -3,8 +3,11 @@
 // and `--noise nan` were clamped or taken without a word, and the figures printed under the
 // value asked for were another value's.
 #include "programrun.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_badbench {
 
 using namespace tipscope::testing;
 
@@ -51,5 +54,7 @@ void TestBadBench::aValueOutOfRangeIsRefusedBeforeAnyFigure() {
         QVERIFY2(line.startsWith(QStringLiteral("bench.")), qPrintable(line));
 }
 
-QTEST_GUILESS_MAIN(TestBadBench)
+TIPSCOPE_TEST_GUILESS_MAIN(TestBadBench)
+
+} // namespace tst_badbench
 #include "tst_badbench.moc"

@@ -8,10 +8,13 @@
 // Known bugs are pinned with QEXPECT_FAIL (reported in docs/reliability.md): when one is fixed
 // its test XPASSes, which fails, so the expectation is removed with the fix.
 #include "programrun.h"
+#include "testmain.h"
 
 #include <QRegularExpression>
 #include <QTemporaryFile>
 #include <QTest>
+
+namespace tst_badcli {
 
 using namespace tipscope::testing;
 
@@ -679,5 +682,7 @@ void TestBadCli::checkRefusedWithoutAWrite(const QByteArray &profile, QByteArray
     QCOMPARE(wire().writes, before.writes); // the simulator's own count: no write frame came
 }
 
-QTEST_GUILESS_MAIN(TestBadCli)
+TIPSCOPE_TEST_GUILESS_MAIN(TestBadCli)
+
+} // namespace tst_badcli
 #include "tst_badcli.moc"

@@ -5,9 +5,12 @@
 // move: if the minimal valid file below stops replaying, the cases are skipped with the reader's
 // own message, so this file is updated with the format instead of failing someone else's build.
 #include "model/recording/chartcsvreader.h"
+#include "testmain.h"
 
 #include <QBuffer>
 #include <QTest>
+
+namespace tst_badcsv {
 
 using namespace tipscope::model;
 
@@ -139,5 +142,7 @@ void TestBadCsv::aFileOverTheLimitIsRefusedBeforeReading() {
     QVERIFY2(error.contains(QStringLiteral("MB")), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestBadCsv)
+TIPSCOPE_TEST_GUILESS_MAIN(TestBadCsv)
+
+} // namespace tst_badcsv
 #include "tst_badcsv.moc"

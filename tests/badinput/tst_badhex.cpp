@@ -4,8 +4,11 @@
 // the message and sends nothing when parsing fails (tests/app/tst_consolepage.cpp), and
 // tst_badcli proves the same for `send` on a real wire, so the parser is the whole story here.
 #include "protocol/hexbytes.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_badhex {
 
 using namespace tipscope::protocol;
 
@@ -109,5 +112,7 @@ void TestBadHex::nonUtf8BytesBecomeReplacementCharactersAndAreRefused() {
     }
 }
 
-QTEST_GUILESS_MAIN(TestBadHex)
+TIPSCOPE_TEST_GUILESS_MAIN(TestBadHex)
+
+} // namespace tst_badhex
 #include "tst_badhex.moc"

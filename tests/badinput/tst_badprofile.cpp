@@ -5,11 +5,14 @@
 // the applier). Known bugs are pinned with QEXPECT_FAIL and reported in docs/reliability.md.
 #include "model/profile.h"
 #include "model/profilerequest.h"
+#include "testmain.h"
 
 #include <QTest>
 #include <csignal>
 #include <sys/stat.h>
 #include <thread>
+
+namespace tst_badprofile {
 
 using namespace tipscope::model;
 
@@ -469,5 +472,7 @@ void TestBadProfile::theRequestCorpusIsRefusedOrAcceptedAsNamed() {
     }
 }
 
-QTEST_GUILESS_MAIN(TestBadProfile)
+TIPSCOPE_TEST_GUILESS_MAIN(TestBadProfile)
+
+} // namespace tst_badprofile
 #include "tst_badprofile.moc"

@@ -9,11 +9,14 @@
 #include "cfx/cfxmessages.h"
 #include "cfxtesting.h"
 #include "testcertificates.h"
+#include "testmain.h"
 
 #include <QJsonArray>
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTest>
+
+namespace tst_amqpsender {
 
 using namespace tipscope;
 using namespace tipscope::cfx;
@@ -212,5 +215,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstAmqpSender)
+TIPSCOPE_TEST_GUILESS_MAIN(TstAmqpSender)
+
+} // namespace tst_amqpsender
 #include "tst_amqpsender.moc"

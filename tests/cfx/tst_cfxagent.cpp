@@ -7,6 +7,7 @@
 // tipscope-cli's monitor --cfx runs the same agent.
 #include "agentprocess.h"
 #include "cfxtesting.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 #include "journal/workcontextfile.h"
@@ -17,6 +18,8 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_cfxagent {
 
 using namespace tipscope;
 using testing::AgentProcess;
@@ -334,5 +337,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCfxAgent)
+TIPSCOPE_TEST_GUILESS_MAIN(TstCfxAgent)
+
+} // namespace tst_cfxagent
 #include "tst_cfxagent.moc"

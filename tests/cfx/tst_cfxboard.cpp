@@ -4,8 +4,11 @@
 // for, without inventing a figure the joint does not have.
 #include "cfx/cfxboard.h"
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_cfxboard {
 
 using namespace tipscope;
 using namespace tipscope::cfx;
@@ -203,5 +206,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCfxBoard)
+TIPSCOPE_TEST_GUILESS_MAIN(TstCfxBoard)
+
+} // namespace tst_cfxboard
 #include "tst_cfxboard.moc"

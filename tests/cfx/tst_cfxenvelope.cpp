@@ -1,9 +1,12 @@
 // The CFX envelope and its AMQP message, held against what the IPC's SDK writes
 // (CFX/CFXEnvelope.cs, CFX/Transport/AmqpUtilities.cs).
 #include "cfx/cfxenvelope.h"
+#include "testmain.h"
 
 #include <QJsonDocument>
 #include <QTest>
+
+namespace tst_cfxenvelope {
 
 using namespace tipscope::cfx;
 
@@ -124,5 +127,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCfxEnvelope)
+TIPSCOPE_TEST_GUILESS_MAIN(TstCfxEnvelope)
+
+} // namespace tst_cfxenvelope
 #include "tst_cfxenvelope.moc"

@@ -8,6 +8,7 @@
 #include "cfx/cfxmessages.h"
 #include "cfxtesting.h"
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 #include "model/workcontextjson.h"
@@ -17,6 +18,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_cfxforwarder {
 
 using namespace tipscope;
 using namespace tipscope::cfx;
@@ -333,5 +336,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCfxForwarder)
+TIPSCOPE_TEST_GUILESS_MAIN(TstCfxForwarder)
+
+} // namespace tst_cfxforwarder
 #include "tst_cfxforwarder.moc"

@@ -1,9 +1,12 @@
 // The CFX messages of a station's endpoint: names and fields as the IPC's SDK has them, the
 // SEMI E10 mapping, handles, and faults tied from the error that raised them to its clearing.
 #include "cfx/cfxmessages.h"
+#include "testmain.h"
 
 #include <QJsonArray>
 #include <QTest>
+
+namespace tst_cfxmessages {
 
 using namespace tipscope::cfx;
 using tipscope::journal::JournalEvent;
@@ -140,5 +143,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCfxMessages)
+TIPSCOPE_TEST_GUILESS_MAIN(TstCfxMessages)
+
+} // namespace tst_cfxmessages
 #include "tst_cfxmessages.moc"

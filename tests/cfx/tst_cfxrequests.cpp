@@ -2,9 +2,12 @@
 // back for each request, and no answer, only the reason, for a request that is damaged, too
 // large, names no endpoint here or says nowhere to answer.
 #include "cfx/cfxrequests.h"
+#include "testmain.h"
 
 #include <QJsonDocument>
 #include <QTest>
+
+namespace tst_cfxrequests {
 
 using namespace tipscope;
 using namespace tipscope::cfx;
@@ -140,5 +143,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCfxRequests)
+TIPSCOPE_TEST_GUILESS_MAIN(TstCfxRequests)
+
+} // namespace tst_cfxrequests
 #include "tst_cfxrequests.moc"

@@ -4,6 +4,9 @@
 // only when it saw that condition begin.
 #include "cfx/stationstate.h"
 #include "model/simfixture.h"
+#include "testmain.h"
+
+namespace tst_stationstate {
 
 using namespace tipscope;
 using namespace tipscope::cfx;
@@ -95,5 +98,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstStationState)
+TIPSCOPE_TEST_GUILESS_MAIN(TstStationState)
+
+} // namespace tst_stationstate
 #include "tst_stationstate.moc"

@@ -1,9 +1,12 @@
 // tipscope-cli end to end: the real binary, a socat PTY pair, and tipscope-sim on the other end.
 #include "programrun.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QRegularExpression>
 #include <QTest>
+
+namespace tst_cli {
 
 using namespace tipscope::testing;
 
@@ -290,7 +293,7 @@ void TestCli::profileSavesDiffsAndAppliesWithReadBack() {
     // Each command reads every setting (about 150): on a loaded test machine one of them can miss
     // the default turnaround three times, which is not what this test is about.
     const auto runCli = [](const QStringList &args) {
-        return ::runCli(QStringList{"--timeout", "1000", "--retries", "5"} + args);
+        return tst_cli::runCli(QStringList{"--timeout", "1000", "--retries", "5"} + args);
     };
     QTemporaryDir dir;
     const QString file = dir.filePath(QStringLiteral("ddr.json"));
@@ -326,5 +329,7 @@ void TestCli::profileSavesDiffsAndAppliesWithReadBack() {
              before.section(QStringLiteral("writes "), 1).section(' ', 0, 0));
 }
 
-QTEST_GUILESS_MAIN(TestCli)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCli)
+
+} // namespace tst_cli
 #include "tst_cli.moc"

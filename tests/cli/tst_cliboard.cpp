@@ -5,6 +5,7 @@
 // their own status.
 #include "journalfixture.h"
 #include "programrun.h"
+#include "testmain.h"
 
 #include "journal/jointexport.h"
 #include "journal/journalreader.h"
@@ -14,6 +15,8 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_cliboard {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -164,5 +167,7 @@ void TestCliBoard::aMissingJournalHasTheJournalsExitStatus() {
     QVERIFY(!QFile::exists(missing));
 }
 
-QTEST_GUILESS_MAIN(TestCliBoard)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCliBoard)
+
+} // namespace tst_cliboard
 #include "tst_cliboard.moc"

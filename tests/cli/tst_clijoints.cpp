@@ -3,6 +3,7 @@
 // the work context; `joints` lists them afterwards, filtered, as text, CSV and JSON; `journal`
 // shows what the journal holds and keeps its retention in the file.
 #include "programrun.h"
+#include "testmain.h"
 
 #include <QCryptographicHash>
 #include <QJsonArray>
@@ -13,6 +14,8 @@
 #include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_clijoints {
 
 using namespace tipscope::testing;
 
@@ -271,5 +274,7 @@ void TestCliJoints::eachKindOfJournalProblemHasItsOwnExitStatus() {
     }
 }
 
-QTEST_GUILESS_MAIN(TestCliJoints)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCliJoints)
+
+} // namespace tst_clijoints
 #include "tst_clijoints.moc"

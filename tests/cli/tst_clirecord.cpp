@@ -3,6 +3,7 @@
 // reader reads it back, and measure finds the joints' recoveries in text and in JSON. Bad
 // durations, files and interruptions end as documented.
 #include "programrun.h"
+#include "testmain.h"
 
 #include "model/recording/chartcsvreader.h"
 
@@ -12,6 +13,8 @@
 #include <QRegularExpression>
 #include <QTest>
 #include <sys/stat.h>
+
+namespace tst_clirecord {
 
 using namespace tipscope::testing;
 using tipscope::model::ChartCsvReader;
@@ -246,5 +249,7 @@ void TestCliRecord::badArgumentsAndFilesAreRefused() {
     QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("x.csv"))));
 }
 
-QTEST_GUILESS_MAIN(TestCliRecord)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCliRecord)
+
+} // namespace tst_clirecord
 #include "tst_clirecord.moc"

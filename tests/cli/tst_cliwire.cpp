@@ -3,6 +3,7 @@
 // message that says what happened.
 #include "fullbacklog.h"
 #include "programrun.h"
+#include "testmain.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -10,6 +11,8 @@
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_cliwire {
 
 using namespace tipscope::testing;
 
@@ -217,5 +220,7 @@ void TestCliWire::junkInsteadOfAnAnswerIsExitFourWithItsSize() {
              qPrintable(err));
 }
 
-QTEST_GUILESS_MAIN(TestCliWire)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCliWire)
+
+} // namespace tst_cliwire
 #include "tst_cliwire.moc"

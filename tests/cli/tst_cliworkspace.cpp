@@ -4,6 +4,7 @@
 // answering; monitor --csv writes a file per line, or one file with a line column; a bad
 // workspace file is refused naming the line and the field.
 #include "programrun.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -12,6 +13,8 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_cliworkspace {
 
 using namespace tipscope::testing;
 
@@ -268,5 +271,7 @@ void TestCliWorkspace::twoLinesWhoseFilesWouldMeetAreRefused() {
              qPrintable(r.err));
 }
 
-QTEST_GUILESS_MAIN(TestCliWorkspace)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCliWorkspace)
+
+} // namespace tst_cliworkspace
 #include "tst_cliworkspace.moc"

@@ -10,10 +10,13 @@
 #include "model/eventtext.h"
 #include "model/supportreport.h"
 #include "model/timetext.h"
+#include "testmain.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QTranslator>
+
+namespace tst_catalogtranslation {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -176,5 +179,7 @@ void TestCatalogTranslation::aDeviceIsDescribedWithTheWordAddressInGerman() {
              QStringLiteral("DME-2C an Adresse 01 über demo, Software 9996780"));
 }
 
-QTEST_GUILESS_MAIN(TestCatalogTranslation)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCatalogTranslation)
+
+} // namespace tst_catalogtranslation
 #include "tst_catalogtranslation.moc"

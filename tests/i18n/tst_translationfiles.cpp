@@ -2,6 +2,8 @@
 // is translated, none is left over from removed source text, and running lupdate over today's
 // sources would change nothing. lupdate runs on a copy in a temporary folder; the committed files
 // are only read.
+#include "testmain.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -12,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QXmlStreamReader>
+
+namespace tst_translationfiles {
 
 namespace {
 
@@ -205,5 +209,7 @@ void TestTranslationFiles::lupdateWouldAddOrRemoveNothing() {
     QCOMPARE(after.size(), before.size());
 }
 
-QTEST_GUILESS_MAIN(TestTranslationFiles)
+TIPSCOPE_TEST_GUILESS_MAIN(TestTranslationFiles)
+
+} // namespace tst_translationfiles
 #include "tst_translationfiles.moc"

@@ -6,6 +6,7 @@
 #include "programrun.h"
 #include "protocol/catalog.h"
 #include "protocol/catalogtext.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QLibraryInfo>
@@ -16,6 +17,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTranslator>
+
+namespace tst_uilanguage {
 
 using namespace tipscope;
 
@@ -239,5 +242,7 @@ void TestUiLanguage::englishCountsInSingularAndPlural() {
     QCOMPARE(plain, QStringLiteral("&Follow")); // everything else is the source itself
 }
 
-QTEST_MAIN(TestUiLanguage)
+TIPSCOPE_TEST_MAIN(TestUiLanguage)
+
+} // namespace tst_uilanguage
 #include "tst_uilanguage.moc"

@@ -2,6 +2,7 @@
 // the figures of the journal the record was read from, and what the journal does not hold said
 // as such, never filled in.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/boardexport.h"
 #include "journal/jointexport.h"
@@ -9,6 +10,8 @@
 #include <QJsonArray>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_boardexport {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -128,5 +131,7 @@ void TestBoardExport::wearIsTheRecentMedianAgainstTheBaseline() {
              qPrintable(text));
 }
 
-QTEST_GUILESS_MAIN(TestBoardExport)
+TIPSCOPE_TEST_GUILESS_MAIN(TestBoardExport)
+
+} // namespace tst_boardexport
 #include "tst_boardexport.moc"

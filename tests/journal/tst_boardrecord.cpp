@@ -3,12 +3,15 @@
 // events and those of its station while it was made, its result from the verdicts, each tip's
 // wear replayed from the joints before it, the profile applied before it.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/boardrecord.h"
 #include "journal/journalreader.h"
 
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_boardrecord {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -121,5 +124,7 @@ void TestBoardRecord::anUnknownSerialGivesAnEmptyRecord() {
     QCOMPARE(record->result, BoardResult::NoJoints);
 }
 
-QTEST_GUILESS_MAIN(TestBoardRecord)
+TIPSCOPE_TEST_GUILESS_MAIN(TestBoardRecord)
+
+} // namespace tst_boardrecord
 #include "tst_boardrecord.moc"

@@ -3,6 +3,7 @@
 // journal that cannot be read is said in the report instead of stopping it. The report also
 // says where the journal is, whether it writes and what it holds.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/jointstatistics.h"
 #include "journal/journalhealth.h"
@@ -12,6 +13,8 @@
 #include <QJsonArray>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_jointstatistics {
 
 using namespace tipscope;
 using namespace tipscope::journal;
@@ -115,5 +118,7 @@ void TestJointStatistics::theReportSaysWhereTheJournalIsWhetherItWritesAndWhatIt
     QVERIFY2(!text.contains(QStringLiteral("lost:")), qPrintable(text));
 }
 
-QTEST_GUILESS_MAIN(TestJointStatistics)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJointStatistics)
+
+} // namespace tst_jointstatistics
 #include "tst_jointstatistics.moc"

@@ -4,6 +4,7 @@
 // closing writes what is queued and later appends are counted lost; a record the database
 // refuses is counted lost while the others are kept, and the journal says so in itself.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 
@@ -15,6 +16,8 @@
 #include <QTest>
 #include <cmath>
 #include <limits>
+
+namespace tst_journal {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -388,5 +391,7 @@ void TestJournal::aRecordTheDatabaseRefusesIsCountedLostAndTheOthersAreKept() {
     QCOMPARE(events.first().record.details.value(QStringLiteral("lost")).toInt(), 1);
 }
 
-QTEST_GUILESS_MAIN(TestJournal)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJournal)
+
+} // namespace tst_journal
 #include "tst_journal.moc"

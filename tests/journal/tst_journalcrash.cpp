@@ -2,12 +2,15 @@
 // work, three times over on the same file. Each time the file passes PRAGMA integrity_check and
 // holds every joint the writer had reported durable before it died.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_journalcrash {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -76,5 +79,7 @@ void TestJournalCrash::everyJointReportedDurableSurvivesAKill() {
           qint64(stored.size()));
 }
 
-QTEST_GUILESS_MAIN(TestJournalCrash)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJournalCrash)
+
+} // namespace tst_journalcrash
 #include "tst_journalcrash.moc"

@@ -4,6 +4,7 @@
 // journal (its size limit, the same SQLite error as a full disk) that catches up once pruning
 // frees space, a damaged file left untouched, and a journal another program holds locked.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 
@@ -15,6 +16,8 @@
 #include <QTest>
 #include <csignal>
 #include <sys/resource.h>
+
+namespace tst_journalerrors {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -269,5 +272,7 @@ void TestJournalErrors::aFileSizeLimitIsToldAsFullAndCaughtUpOnceLifted() {
         QVERIFY2(stored.contains(uid), qPrintable(uid.toString()));
 }
 
-QTEST_GUILESS_MAIN(TestJournalErrors)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJournalErrors)
+
+} // namespace tst_journalerrors
 #include "tst_journalerrors.moc"

@@ -2,6 +2,7 @@
 // order, with a limit, newest or oldest first, each checked against the same filter applied by
 // hand to what was appended; verdict counts and recovery quantiles per port; known devices.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 
@@ -9,6 +10,8 @@
 #include <QTest>
 #include <algorithm>
 #include <functional>
+
+namespace tst_journalquery {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -19,8 +22,6 @@ using journal::JournalEvent;
 using journal::JournalReader;
 using journal::Order;
 using model::JointVerdict;
-
-namespace {
 
 constexpr int kJoints = 48;
 constexpr qint64 kStepMs = 60'000;
@@ -43,8 +44,6 @@ QList<Appended> appendedJoints() {
 }
 
 using JointPredicate = std::function<bool(const Appended &)>;
-
-} // namespace
 
 class TestJournalQuery : public QObject {
     Q_OBJECT
@@ -275,5 +274,7 @@ void TestJournalQuery::aMissingFileIsNotCreatedByAReader() {
     QCOMPARE(joints.error(), QStringLiteral("No journal is open."));
 }
 
-QTEST_GUILESS_MAIN(TestJournalQuery)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJournalQuery)
+
+} // namespace tst_journalquery
 #include "tst_journalquery.moc"

@@ -3,6 +3,7 @@
 // The retention is kept in the journal file: every program that opens it prunes alike, and a
 // running one takes a retention another program set at its next pruning.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 #include "journal/journalsettings.h"
@@ -10,6 +11,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_journalretention {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -183,5 +186,7 @@ void TestJournalRetention::anImpossibleRetentionIsRefusedAndChangesNothing() {
     QCOMPARE(journal.retentionDays(), journal::kDefaultRetentionDays);
 }
 
-QTEST_GUILESS_MAIN(TestJournalRetention)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJournalRetention)
+
+} // namespace tst_journalretention
 #include "tst_journalretention.moc"

@@ -3,6 +3,7 @@
 // unsent; files that are not ours to change (a newer schema, another program's database) are
 // refused and left byte for byte as they were; the default file lives in TipScope's data folder.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 #include "journal/journalschema.h"
@@ -13,6 +14,8 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_journalschema {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -224,5 +227,7 @@ void TestJournalSchema::theDefaultFileIsInTipScopesDataFolderForEveryProgram() {
              QStandardPaths::writableLocation(QStandardPaths::AppDataLocation));
 }
 
-QTEST_GUILESS_MAIN(TestJournalSchema)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJournalSchema)
+
+} // namespace tst_journalschema
 #include "tst_journalschema.moc"

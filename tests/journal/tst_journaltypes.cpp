@@ -3,8 +3,11 @@
 #include "journal/journalevent.h"
 #include "model/deviceidentity.h"
 #include "model/joints/jointrecord.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_journaltypes {
 
 using namespace tipscope;
 using journal::JournalEvent;
@@ -103,5 +106,7 @@ void TestJournalTypes::anEventLogEntryBecomesAJournalEventOfTheSameKind() {
     QCOMPARE(event.text, QStringLiteral("Short circuit"));
 }
 
-QTEST_GUILESS_MAIN(TestJournalTypes)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJournalTypes)
+
+} // namespace tst_journaltypes
 #include "tst_journaltypes.moc"

@@ -4,6 +4,7 @@
 #include "journal/journalreader.h"
 #include "journal/sessionjournal.h"
 #include "journal/workcontextfile.h"
+#include "testmain.h"
 
 #include "sim/demoactivity.h"
 
@@ -12,6 +13,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_sessionjournal {
 
 using namespace tipscope;
 using namespace tipscope::journal;
@@ -166,5 +169,7 @@ void TestSessionJournal::aLineWithAWorkContextOfItsOwnIsKeptWithIt() {
     QCOMPARE(contextEvents.value().first().context, shared);
 }
 
-QTEST_GUILESS_MAIN(TestSessionJournal)
+TIPSCOPE_TEST_GUILESS_MAIN(TestSessionJournal)
+
+} // namespace tst_sessionjournal
 #include "tst_sessionjournal.moc"

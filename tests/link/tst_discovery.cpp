@@ -5,15 +5,18 @@
 #include "link/line.h"
 #include "link/simtransport.h"
 #include "sim/simline.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
 
+Q_DECLARE_METATYPE(tipscope::link::DeviceInfo)
+
+namespace tst_discovery {
+
 using namespace tipscope::link;
 using tipscope::sim::SimLine;
 using tipscope::sim::SimStation;
-
-Q_DECLARE_METATYPE(tipscope::link::DeviceInfo)
 
 namespace {
 
@@ -306,5 +309,7 @@ void TestDiscovery::identifySaysWhyTheDeviceWasNotIdentified() {
     QCOMPARE(found.error().reason.isEmpty(), replyError == int(ReplyError::None));
 }
 
-QTEST_GUILESS_MAIN(TestDiscovery)
+TIPSCOPE_TEST_GUILESS_MAIN(TestDiscovery)
+
+} // namespace tst_discovery
 #include "tst_discovery.moc"

@@ -3,12 +3,15 @@
 // chunk it receives and every decode event (a stray frame marked as such), so the console sees
 // the wire as it was.
 #include "scriptedqueue.h"
+#include "testmain.h"
 
 #include "link/frametap.h"
 
 #include <QDateTime>
 #include <QTest>
 #include <QThread>
+
+namespace tst_frametap {
 
 using namespace tipscope::link;
 using tipscope::protocol::DecodeEvent;
@@ -177,5 +180,7 @@ void TestFrameTap::aTimeoutAndALostLineAreNoted() {
     QCOMPARE(notes.at(1), QStringLiteral("line lost: cable pulled"));
 }
 
-QTEST_MAIN(TestFrameTap)
+TIPSCOPE_TEST_MAIN(TestFrameTap)
+
+} // namespace tst_frametap
 #include "tst_frametap.moc"

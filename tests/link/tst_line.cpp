@@ -5,11 +5,14 @@
 #include "link/simtransport.h"
 #include "sim/simcontrol.h"
 #include "sim/simline.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QRandomGenerator>
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_line {
 
 using namespace tipscope::link;
 using tipscope::sim::SimLine;
@@ -258,5 +261,7 @@ void TestLine::serialPortThatDoesNotExistFailsWithNotFound() {
     QVERIFY(line.stateText().contains(reason));
 }
 
-QTEST_GUILESS_MAIN(TestLine)
+TIPSCOPE_TEST_GUILESS_MAIN(TestLine)
+
+} // namespace tst_line
 #include "tst_line.moc"

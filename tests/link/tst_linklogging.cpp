@@ -6,10 +6,13 @@
 #include "link/simtransport.h"
 #include "protocol/framedecoder.h"
 #include "sim/simline.h"
+#include "testmain.h"
 
 #include <QLoggingCategory>
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_linklogging {
 
 using namespace tipscope::link;
 using tipscope::protocol::FrameDecoder;
@@ -143,5 +146,7 @@ void TestLinkLogging::decoderLogsEverySkippedFrameWhenSwitchedOn() {
     }
 }
 
-QTEST_GUILESS_MAIN(TestLinkLogging)
+TIPSCOPE_TEST_GUILESS_MAIN(TestLinkLogging)
+
+} // namespace tst_linklogging
 #include "tst_linklogging.moc"

@@ -3,6 +3,7 @@
 // last five seconds, NAKs add up by code, and a queue's figures match what happened on the wire:
 // a latency is never shorter than the device took to answer, nor longer than the whole exchange.
 #include "scriptedqueue.h"
+#include "testmain.h"
 
 #include "link/linkstats.h"
 
@@ -10,6 +11,8 @@
 #include <QRandomGenerator>
 #include <QTest>
 #include <algorithm>
+
+namespace tst_linkstats {
 
 using namespace tipscope::link;
 using tipscope::protocol::Frame;
@@ -252,5 +255,7 @@ void TestLinkStats::aQueuesLatencyLiesBetweenTheAnswerDelayAndTheWholeExchange()
     QVERIFY(s.transactionsPerSecond(line.queue.nowMs()) > 0);
 }
 
-QTEST_MAIN(TestLinkStats)
+TIPSCOPE_TEST_MAIN(TestLinkStats)
+
+} // namespace tst_linkstats
 #include "tst_linkstats.moc"

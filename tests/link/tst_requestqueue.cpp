@@ -3,6 +3,7 @@
 // counts, and failure reporting. Time budgets are kept small; only counts, order and outcomes are
 // asserted, never how long something took at most.
 #include "scriptedtransport.h"
+#include "testmain.h"
 
 #include "link/requestqueue.h"
 #include "protocol/catalog.h"
@@ -11,6 +12,8 @@
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_requestqueue {
 
 using namespace tipscope::link;
 using namespace tipscope::protocol;
@@ -1039,5 +1042,7 @@ void TestRequestQueue::aReplyThatDeletesItselfIsGoneAfterItsFinishedEvenWhenItsO
     QVERIFY(!orphan);
 }
 
-QTEST_GUILESS_MAIN(TestRequestQueue)
+TIPSCOPE_TEST_GUILESS_MAIN(TestRequestQueue)
+
+} // namespace tst_requestqueue
 #include "tst_requestqueue.moc"

@@ -3,10 +3,13 @@
 #include "link/serialtransport.h"
 #include "protocol/frame.h"
 #include "ptyfixtures.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_serialtransport {
 
 using namespace tipscope::link;
 using tipscope::testing::SimProcess;
@@ -78,5 +81,7 @@ void TestSerialTransport::unpluggedPortIsSaidToHaveDisappeared() {
     QCOMPARE(lost.count(), 1);
 }
 
-QTEST_GUILESS_MAIN(TestSerialTransport)
+TIPSCOPE_TEST_GUILESS_MAIN(TestSerialTransport)
+
+} // namespace tst_serialtransport
 #include "tst_serialtransport.moc"

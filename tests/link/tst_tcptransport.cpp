@@ -6,12 +6,15 @@
 #include "link/tcptransport.h"
 #include "protocol/frame.h"
 #include "protocol/framedecoder.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
 #include <memory>
+
+namespace tst_tcptransport {
 
 using namespace tipscope::link;
 using tipscope::protocol::Frame;
@@ -352,5 +355,7 @@ void TestTcpTransport::hostAndPortAreParsed() {
     }
 }
 
-QTEST_MAIN(TestTcpTransport)
+TIPSCOPE_TEST_MAIN(TestTcpTransport)
+
+} // namespace tst_tcptransport
 #include "tst_tcptransport.moc"

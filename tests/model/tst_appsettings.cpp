@@ -1,10 +1,13 @@
 // Settings from an older version or edited by hand fall back to defaults; they never reach the
 // line.
 #include "model/appsettings.h"
+#include "testmain.h"
 
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_appsettings {
 
 using namespace tipscope::model;
 
@@ -107,5 +110,7 @@ void TestAppSettings::unusableConnectionsAreRefusedWithAReason() {
     QVERIFY(demo->demoActivity); // the GUI's demo is at work, so its charts show something
 }
 
-QTEST_GUILESS_MAIN(TestAppSettings)
+TIPSCOPE_TEST_GUILESS_MAIN(TestAppSettings)
+
+} // namespace tst_appsettings
 #include "tst_appsettings.moc"

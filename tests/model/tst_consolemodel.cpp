@@ -3,10 +3,13 @@
 // without dropping them. Rows say what they are in the user interface language.
 #include "i18n/translations.h"
 #include "model/consolemodel.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
 #include <QTranslator>
+
+namespace tst_consolemodel {
 
 using namespace tipscope;
 using model::ConsoleModel;
@@ -220,5 +223,7 @@ void TestConsoleModel::headersAreNamedInTheInterfaceLanguage() {
     QCOMPARE(ConsoleModel::headerText(protocol::Header::Read), QStringLiteral("Read"));
 }
 
-QTEST_MAIN(TestConsoleModel)
+TIPSCOPE_TEST_MAIN(TestConsoleModel)
+
+} // namespace tst_consolemodel
 #include "tst_consolemodel.moc"

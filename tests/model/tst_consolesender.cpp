@@ -2,11 +2,14 @@
 // reaches the device once and its answer is reported; monitor-only refuses whatever is or may be
 // a write, says why, and puts nothing on the wire; without a line nothing is sent either.
 #include "simfixture.h"
+#include "testmain.h"
 
 #include "i18n/translations.h"
 #include "model/consolesender.h"
 #include "model/framecomposer.h"
 #include "protocol/hexbytes.h"
+
+namespace tst_consolesender {
 
 using namespace tipscope;
 using model::ConsoleSender;
@@ -201,5 +204,7 @@ void TestConsoleSender::theGateSaysWhenMonitorOnlyOrTheLineChanges() {
     QCOMPARE(gate.count(), 3);
 }
 
-QTEST_MAIN(TestConsoleSender)
+TIPSCOPE_TEST_MAIN(TestConsoleSender)
+
+} // namespace tst_consolesender
 #include "tst_consolesender.moc"

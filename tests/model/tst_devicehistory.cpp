@@ -7,11 +7,14 @@
 #include "model/chart/chartframe.h"
 #include "model/session.h"
 #include "model/telemetryrecorder.h"
+#include "testmain.h"
 
 #include "support/ptyfixtures.h"
 
 #include <QTest>
 #include <cmath>
+
+namespace tst_devicehistory {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -187,5 +190,7 @@ void TestDeviceHistory::anUnplugLeavesAGapThatNoCurveOrMeasurementCrosses() {
     QVERIFY(!readoutAt(session.telemetry(), {channel}, traces, gap.startMs + 12'000).at(0).valid);
 }
 
-QTEST_GUILESS_MAIN(TestDeviceHistory)
+TIPSCOPE_TEST_GUILESS_MAIN(TestDeviceHistory)
+
+} // namespace tst_devicehistory
 #include "tst_devicehistory.moc"

@@ -3,9 +3,12 @@
 // flood of one event collapses into one entry with a count and a time span, announced once as
 // appended and then as repeated; anything else the same source says ends the flood.
 #include "model/eventlog.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_eventlog {
 
 using namespace tipscope;
 using model::Event;
@@ -220,5 +223,7 @@ void TestEventLog::repeatsTakeNoRoomUnderTheBound() {
     QCOMPARE(log.events().constFirst().text, QStringLiteral("first"));
 }
 
-QTEST_GUILESS_MAIN(TestEventLog)
+TIPSCOPE_TEST_GUILESS_MAIN(TestEventLog)
+
+} // namespace tst_eventlog
 #include "tst_eventlog.moc"

@@ -2,6 +2,9 @@
 // found by role, the feeding commands and the error reset reach the feeder, and error changes
 // reach the event log with their level.
 #include "simfixture.h"
+#include "testmain.h"
+
+namespace tst_feedermodel {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -120,5 +123,7 @@ void TestFeederModel::aPartialCounterResetNeedsConfirmationAndItsCode() {
     QVERIFY(reset.first().at(0).toBool());
 }
 
-QTEST_GUILESS_MAIN(TestFeederModel)
+TIPSCOPE_TEST_GUILESS_MAIN(TestFeederModel)
+
+} // namespace tst_feedermodel
 #include "tst_feedermodel.moc"

@@ -3,11 +3,14 @@
 // command list of the device's family, and raw hex read for people.
 #include "i18n/translations.h"
 #include "model/framecomposer.h"
+#include "testmain.h"
 
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 
 #include <QTest>
+
+namespace tst_framecomposer {
 
 using namespace tipscope;
 using model::FrameComposer;
@@ -358,5 +361,7 @@ void TestFrameComposer::theRawHexExampleIsAValidReadOfTheModelName() {
     QCOMPARE(*frame, protocol::Frame::read("SMN").addressed(0, 1));
 }
 
-QTEST_MAIN(TestFrameComposer)
+TIPSCOPE_TEST_MAIN(TestFrameComposer)
+
+} // namespace tst_framecomposer
 #include "tst_framecomposer.moc"

@@ -1,8 +1,11 @@
 // Every parameter of a DME, a DDR and an SFR reads, validates, writes and verifies against the
 // simulator through the real link; refused values never reach the wire.
 #include "simfixture.h"
+#include "testmain.h"
 
 #include "model/eventlog.h"
+
+namespace tst_parameters {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -415,5 +418,7 @@ void TestParameters::feederCommandsAndCountersWork() {
     QVERIFY(fd->errorText().contains(QStringLiteral("5")));
 }
 
-QTEST_GUILESS_MAIN(TestParameters)
+TIPSCOPE_TEST_GUILESS_MAIN(TestParameters)
+
+} // namespace tst_parameters
 #include "tst_parameters.moc"

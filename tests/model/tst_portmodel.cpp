@@ -1,6 +1,9 @@
 // PortModel against the simulator: a port's values by role, its decoded alarm and status, its
 // error's words and level, the catalog's groups per port, tool names, and the robot controls.
 #include "simfixture.h"
+#include "testmain.h"
+
+namespace tst_portmodel {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -160,5 +163,7 @@ void TestPortModel::selectedTemperatureIsWrittenOrRefusedWithTheLimits() {
     QCOMPARE(f.simLine->stats().writeRequests, writes);
 }
 
-QTEST_GUILESS_MAIN(TestPortModel)
+TIPSCOPE_TEST_GUILESS_MAIN(TestPortModel)
+
+} // namespace tst_portmodel
 #include "tst_portmodel.moc"

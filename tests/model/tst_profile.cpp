@@ -1,5 +1,6 @@
 // Profiles round-trip, refuse bad files without writing, and apply while polling continues.
 #include "simfixture.h"
+#include "testmain.h"
 
 #include "model/pollscheduler.h"
 #include "model/profileapplier.h"
@@ -9,6 +10,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
+
+namespace tst_profile {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -497,5 +500,7 @@ void TestProfile::liveValuesKeepUpdatingWhileAProfileIsApplied() {
                                 .arg(updates.value(port).size())));
 }
 
-QTEST_GUILESS_MAIN(TestProfile)
+TIPSCOPE_TEST_GUILESS_MAIN(TestProfile)
+
+} // namespace tst_profile
 #include "tst_profile.moc"

@@ -1,10 +1,13 @@
 // The poll scheduler spends the wire where people look and never floods the queue.
 #include "simfixture.h"
+#include "testmain.h"
 
 #include "model/pollscheduler.h"
 #include "model/portmodel.h"
 
 #include <algorithm>
+
+namespace tst_scheduler {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -343,5 +346,7 @@ void TestScheduler::fillingTheWireKeepsItBusyWithLiveValuesOnly() {
         QCOMPARE(spy->size(), 1);
 }
 
-QTEST_GUILESS_MAIN(TestScheduler)
+TIPSCOPE_TEST_GUILESS_MAIN(TestScheduler)
+
+} // namespace tst_scheduler
 #include "tst_scheduler.moc"

@@ -4,6 +4,7 @@
 // it was given. Its devices know whether the line
 // is up, and a write the lost line refused is no longer an error once the line is back.
 #include "model/session.h"
+#include "testmain.h"
 
 #include "link/simtransport.h"
 
@@ -12,6 +13,8 @@
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_session {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -171,5 +174,7 @@ void TestSession::aWriteTheLostLineRefusedIsNoErrorOnceTheLineIsBack() {
     QCOMPARE(mat->edit(), std::optional<qint64>(wanted));
 }
 
-QTEST_GUILESS_MAIN(TestSession)
+TIPSCOPE_TEST_GUILESS_MAIN(TestSession)
+
+} // namespace tst_session
 #include "tst_session.moc"

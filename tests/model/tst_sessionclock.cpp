@@ -2,9 +2,12 @@
 // one, ignores the wall clock set back, catches up when the wall clock runs ahead (the computer
 // slept and the monotonic clock stood still), and never goes backwards.
 #include "model/sessionclock.h"
+#include "testmain.h"
 
 #include <QDateTime>
 #include <QTest>
+
+namespace tst_sessionclock {
 
 using tipscope::model::SessionClock;
 
@@ -81,5 +84,7 @@ void TestSessionClock::theSystemClockNeverGoesBackwards() {
     }
 }
 
-QTEST_GUILESS_MAIN(TestSessionClock)
+TIPSCOPE_TEST_GUILESS_MAIN(TestSessionClock)
+
+} // namespace tst_sessionclock
 #include "tst_sessionclock.moc"

@@ -2,8 +2,11 @@
 // found by role, its errors carry their words and level, its actions are found by role and a
 // missing one is named, and changes of error, alarm and status reach the event log.
 #include "simfixture.h"
+#include "testmain.h"
 
 #include "support/testcatalog.h"
+
+namespace tst_stationmodel {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -177,5 +180,7 @@ void TestStationModel::anotherCatalogsEntriesBecomeParameters() {
              qPrintable(text));
 }
 
-QTEST_GUILESS_MAIN(TestStationModel)
+TIPSCOPE_TEST_GUILESS_MAIN(TestStationModel)
+
+} // namespace tst_stationmodel
 #include "tst_stationmodel.moc"

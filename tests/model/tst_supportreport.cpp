@@ -3,6 +3,7 @@
 // error, carries the UTC offset on every time, collapses a flood into one line, leaves nothing
 // blank that is not known, and gives each line of a workspace its own part under its names.
 #include "model/supportreport.h"
+#include "testmain.h"
 
 #include "model/session.h"
 #include "sim/simline.h"
@@ -10,6 +11,8 @@
 #include <QJsonArray>
 #include <QRegularExpression>
 #include <QTest>
+
+namespace tst_supportreport {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -216,5 +219,7 @@ void TestSupportReport::anUnusedBarLineBesideAWorkspaceIsLeftOut() {
                  qPrintable(line));
 }
 
-QTEST_MAIN(TestSupportReport)
+TIPSCOPE_TEST_MAIN(TestSupportReport)
+
+} // namespace tst_supportreport
 #include "tst_supportreport.moc"

@@ -3,9 +3,12 @@
 // and mosquitto_sub), mosquitto_pub's messages reach our subscriber, and publishing is refused
 // and counted while disconnected or once too many messages wait.
 #include "mqtttesting.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_mqttclient {
 
 using namespace tipscope::mqtt;
 using namespace tipscope::testing;
@@ -208,5 +211,7 @@ void TstMqttClient::invalidTopicsAndFiltersAreRefused() {
     QVERIFY(!client.unsubscribe(QStringLiteral("never/subscribed")).ok());
 }
 
-QTEST_GUILESS_MAIN(TstMqttClient)
+TIPSCOPE_TEST_GUILESS_MAIN(TstMqttClient)
+
+} // namespace tst_mqttclient
 #include "tst_mqttclient.moc"

@@ -3,9 +3,12 @@
 // subscriptions renewed; a QoS 1 message in flight when the broker dies is delivered after the
 // reconnect; a closed port and an unknown host are reported; stop() ends the retries.
 #include "mqtttesting.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_mqttreconnect {
 
 using namespace tipscope::mqtt;
 using namespace tipscope::testing;
@@ -194,5 +197,7 @@ void TstMqttReconnect::stopEndsTheRetries() {
     QCOMPARE(states.count(), 1);
 }
 
-QTEST_GUILESS_MAIN(TstMqttReconnect)
+TIPSCOPE_TEST_GUILESS_MAIN(TstMqttReconnect)
+
+} // namespace tst_mqttreconnect
 #include "tst_mqttreconnect.moc"

@@ -3,11 +3,14 @@
 // broker refuses it again and again.
 #include "mqtt/mqttsecret.h"
 #include "mqtttesting.h"
+#include "testmain.h"
 
 #include <QLoggingCategory>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_mqttsecret {
 
 using namespace tipscope::mqtt;
 using namespace tipscope::testing;
@@ -118,5 +121,7 @@ void TstMqttSecret::passwordNeverAppearsInLogsOrErrors() {
         QVERIFY2(!line.contains(password), qPrintable(line));
 }
 
-QTEST_GUILESS_MAIN(TstMqttSecret)
+TIPSCOPE_TEST_GUILESS_MAIN(TstMqttSecret)
+
+} // namespace tst_mqttsecret
 #include "tst_mqttsecret.moc"

@@ -4,9 +4,12 @@
 // accepts ours and refuses a client without one.
 #include "mqtttesting.h"
 #include "testcertificates.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_mqtttls {
 
 using namespace tipscope::mqtt;
 using namespace tipscope::testing;
@@ -147,5 +150,7 @@ void TstMqttTls::unreadableCaFileIsASettingsProblem() {
     QCOMPARE(client.state(), State::Stopped);
 }
 
-QTEST_GUILESS_MAIN(TstMqttTls)
+TIPSCOPE_TEST_GUILESS_MAIN(TstMqttTls)
+
+} // namespace tst_mqtttls
 #include "tst_mqtttls.moc"

@@ -1,8 +1,11 @@
 // Topic levels made from people's names, and matching subscription filters with + and #, as the
 // broker matches them (MQTT 3.1.1, 4.7).
 #include "mqtt/mqtttopic.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_mqtttopic {
 
 using namespace tipscope::mqtt;
 
@@ -117,5 +120,7 @@ void TstMqttTopic::topicNamesAndFiltersAreValidated() {
     QCOMPARE(isValidTopicFilter(text), validFilter);
 }
 
-QTEST_GUILESS_MAIN(TstMqttTopic)
+TIPSCOPE_TEST_GUILESS_MAIN(TstMqttTopic)
+
+} // namespace tst_mqtttopic
 #include "tst_mqtttopic.moc"

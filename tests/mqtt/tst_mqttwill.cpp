@@ -3,10 +3,13 @@
 // mosquitto_sub as an independent client; a client destroyed without stop() also leaves its will
 // behind, and one that stop()s does not (it publishes its own "offline" first).
 #include "mqtttesting.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
 #include <signal.h>
+
+namespace tst_mqttwill {
 
 using namespace tipscope::mqtt;
 using namespace tipscope::testing;
@@ -120,5 +123,7 @@ void TstMqttWill::stoppedClientLeavesNoWill() {
              qPrintable(broker.output()));
 }
 
-QTEST_GUILESS_MAIN(TstMqttWill)
+TIPSCOPE_TEST_GUILESS_MAIN(TstMqttWill)
+
+} // namespace tst_mqttwill
 #include "tst_mqttwill.moc"

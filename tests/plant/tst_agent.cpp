@@ -7,6 +7,7 @@
 #include "agentprocess.h"
 #include "mosquittobroker.h"
 #include "ptyfixtures.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 #include "model/joints/jointdetector.h"
@@ -25,10 +26,10 @@
 #include <QTest>
 #include <csignal>
 
+namespace tst_agent {
+
 using namespace tipscope;
 using namespace tipscope::testing;
-
-namespace {
 
 const QString kRoot = QStringLiteral("tipscope/v1/test_site/cell-1/01-dme");
 const QString kFeederRoot = QStringLiteral("tipscope/v1/test_site/cell-1/10-sfr");
@@ -86,8 +87,6 @@ private:
 bool isOnline(const QJsonObject &status) {
     return status.value(QStringLiteral("online")).toBool();
 }
-
-} // namespace
 
 class TestAgent : public QObject {
     Q_OBJECT
@@ -564,5 +563,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAgent)
+TIPSCOPE_TEST_GUILESS_MAIN(TestAgent)
+
+} // namespace tst_agent
 #include "tst_agent.moc"

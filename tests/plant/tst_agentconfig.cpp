@@ -2,11 +2,14 @@
 // environment (never from the file itself), and every refusal naming the field, checked before
 // anything connects.
 #include "plant/agentconfig.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QJsonDocument>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_agentconfig {
 
 using namespace tipscope::plant;
 
@@ -217,5 +220,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAgentConfig)
+TIPSCOPE_TEST_GUILESS_MAIN(TestAgentConfig)
+
+} // namespace tst_agentconfig
 #include "tst_agentconfig.moc"

@@ -9,12 +9,15 @@
 #include "mosquittobroker.h"
 #include "ptyfixtures.h"
 #include "testcertificates.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QTest>
+
+namespace tst_agenttls {
 
 using namespace tipscope::testing;
 
@@ -165,5 +168,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAgentTls)
+TIPSCOPE_TEST_GUILESS_MAIN(TestAgentTls)
+
+} // namespace tst_agenttls
 #include "tst_agenttls.moc"

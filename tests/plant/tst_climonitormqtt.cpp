@@ -3,11 +3,14 @@
 #include "../mqtt/mqtttesting.h"
 #include "mosquittobroker.h"
 #include "ptyfixtures.h"
+#include "testmain.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_climonitormqtt {
 
 using namespace tipscope::testing;
 
@@ -104,5 +107,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCliMonitorMqtt)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCliMonitorMqtt)
+
+} // namespace tst_climonitormqtt
 #include "tst_climonitormqtt.moc"

@@ -1,8 +1,11 @@
 // Topic names of docs/mqtt.md: the device level from a name or from address and family, every
 // level lower-cased and made safe, and the way back from a topic to its site, line and device.
 #include "plant/planttopics.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_planttopics {
 
 using namespace tipscope::plant;
 
@@ -66,5 +69,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestPlantTopics)
+TIPSCOPE_TEST_GUILESS_MAIN(TestPlantTopics)
+
+} // namespace tst_planttopics
 #include "tst_planttopics.moc"

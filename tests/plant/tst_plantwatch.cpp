@@ -4,6 +4,7 @@
 // the rest is refused, logged once per publisher, line or site however often it comes, and a
 // good device beside the hostile ones is watched as ever.
 #include "../mqtt/mqtttesting.h"
+#include "testmain.h"
 
 #include "plant/plantwatch.h"
 #include "plant/plantwatchlimits.h"
@@ -11,6 +12,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QTest>
+
+namespace tst_plantwatch {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -125,5 +128,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestPlantWatch)
+TIPSCOPE_TEST_GUILESS_MAIN(TestPlantWatch)
+
+} // namespace tst_plantwatch
 #include "tst_plantwatch.moc"

@@ -8,9 +8,12 @@
 #include "journaledfrontend.h"
 #include "mosquittobroker.h"
 #include "ptyfixtures.h"
+#include "testmain.h"
 
 #include <QRegularExpression>
 #include <QTest>
+
+namespace tst_refusedreadings {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -119,5 +122,7 @@ void TestRefusedReadings::aRefusedReadingCostsOnlyItself() {
     QVERIFY2(out.contains(QStringLiteral("joint P1 ")), qPrintable(out));
 }
 
-QTEST_GUILESS_MAIN(TestRefusedReadings)
+TIPSCOPE_TEST_GUILESS_MAIN(TestRefusedReadings)
+
+} // namespace tst_refusedreadings
 #include "tst_refusedreadings.moc"

@@ -7,9 +7,12 @@
 #include "journaledfrontend.h"
 #include "mosquittobroker.h"
 #include "ptyfixtures.h"
+#include "testmain.h"
 
 #include <QDateTime>
 #include <QTest>
+
+namespace tst_restsandwakes {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -204,5 +207,7 @@ void TestRestsAndWakes::aToolTakenOutAndPutBackIsOnTimeAndNoJoint() {
                             .arg(joints.isEmpty() ? 0 : joints.first().record.startMs - outMs)));
 }
 
-QTEST_GUILESS_MAIN(TestRestsAndWakes)
+TIPSCOPE_TEST_GUILESS_MAIN(TestRestsAndWakes)
+
+} // namespace tst_restsandwakes
 #include "tst_restsandwakes.moc"

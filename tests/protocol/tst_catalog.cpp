@@ -2,9 +2,12 @@
 #include "protocol/catalog.h"
 #include "protocol/valuecodec.h"
 #include "support/testcatalog.h"
+#include "testmain.h"
 
 #include <QSet>
 #include <QTest>
+
+namespace tst_catalog {
 
 using namespace tipscope::protocol;
 
@@ -602,5 +605,7 @@ void TestCatalog::aRoleOnAPortResolvesToItsWireCode() {
     QCOMPARE(resolved ? resolved->code : QByteArray(), code);
 }
 
-QTEST_GUILESS_MAIN(TestCatalog)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCatalog)
+
+} // namespace tst_catalog
 #include "tst_catalog.moc"

@@ -1,7 +1,10 @@
 // Data-field formats: numbers, ss.cc delays, the disabled sentinel, hex counters, text.
 #include "protocol/datafield.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_datafield {
 
 using namespace tipscope::protocol;
 
@@ -86,5 +89,7 @@ void TestDataField::textMayBeShorterOrLongerThanFive() {
     QVERIFY(!parseText(QByteArray("DM\x01", 3)));
 }
 
-QTEST_GUILESS_MAIN(TestDataField)
+TIPSCOPE_TEST_GUILESS_MAIN(TestDataField)
+
+} // namespace tst_datafield
 #include "tst_datafield.moc"

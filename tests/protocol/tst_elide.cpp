@@ -1,8 +1,11 @@
 // The one rule for echoing input in messages: short input whole, long input cut with its length,
 // control characters by their code.
 #include "protocol/elide.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_elide {
 
 using namespace tipscope::protocol;
 
@@ -62,5 +65,7 @@ void TestElide::pathsKeepMoreOfTheirLength() {
         elidedPath(QString(5000, QLatin1Char('p'))).endsWith(QStringLiteral("(5000 characters)")));
 }
 
-QTEST_GUILESS_MAIN(TestElide)
+TIPSCOPE_TEST_GUILESS_MAIN(TestElide)
+
+} // namespace tst_elide
 #include "tst_elide.moc"

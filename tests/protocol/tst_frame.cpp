@@ -1,7 +1,10 @@
 // The guides' worked frames, byte-exact in both directions.
 #include "protocol/framedecoder.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_frame {
 
 using namespace tipscope::protocol;
 
@@ -75,5 +78,7 @@ void TestFrame::toStringShowsAddressesHeaderCommandData() {
     QCOMPARE(Frame::read("ST1").toString(), QStringLiteral("R ST1"));
 }
 
-QTEST_GUILESS_MAIN(TestFrame)
+TIPSCOPE_TEST_GUILESS_MAIN(TestFrame)
+
+} // namespace tst_frame
 #include "tst_frame.moc"

@@ -1,8 +1,11 @@
 // The streaming decoder against everything a serial line can deliver.
 #include "protocol/framedecoder.h"
+#include "testmain.h"
 
 #include <QRandomGenerator>
 #include <QTest>
+
+namespace tst_framedecoder {
 
 using namespace tipscope::protocol;
 
@@ -265,5 +268,7 @@ void TestFrameDecoder::randomBytesNeverCrashAndEveryByteIsAccountedFor() {
     QCOMPARE(accounted + d.pendingBytes(), fed);
 }
 
-QTEST_GUILESS_MAIN(TestFrameDecoder)
+TIPSCOPE_TEST_GUILESS_MAIN(TestFrameDecoder)
+
+} // namespace tst_framedecoder
 #include "tst_framedecoder.moc"

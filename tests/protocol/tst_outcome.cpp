@@ -1,8 +1,11 @@
 // Outcome carries either the value or the reason, never both, whatever the types: a QString
 // value beside a QString reason, nothing at all (Outcome<void>), or an error type of its own.
 #include "protocol/outcome.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_outcome {
 
 using namespace tipscope::protocol;
 
@@ -71,5 +74,7 @@ void TestOutcome::anErrorTypeOfItsOwnCarriesMoreThanWords() {
     QCOMPARE(n.error().code, 7);
 }
 
-QTEST_GUILESS_MAIN(TestOutcome)
+TIPSCOPE_TEST_GUILESS_MAIN(TestOutcome)
+
+} // namespace tst_outcome
 #include "tst_outcome.moc"

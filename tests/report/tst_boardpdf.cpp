@@ -4,6 +4,7 @@
 // page, that of a large one runs on; a file that cannot be written is refused whole; the document
 // speaks the user interface language.
 #include "journalfixture.h"
+#include "testmain.h"
 
 #include "i18n/translations.h"
 #include "report/boardpdf.h"
@@ -12,6 +13,8 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_boardpdf {
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -140,5 +143,7 @@ void TestBoardPdf::theDocumentIsInTheInterfaceLanguage() {
     QCOMPARE(pdfPages(pdf), 1);
 }
 
-QTEST_MAIN(TestBoardPdf)
+TIPSCOPE_TEST_MAIN(TestBoardPdf)
+
+} // namespace tst_boardpdf
 #include "tst_boardpdf.moc"

@@ -3,6 +3,7 @@
 // does not own kept as well, and a joint still under way when the service finishes kept as
 // incomplete.
 #include "service/lineservice.h"
+#include "testmain.h"
 
 #include "journal/journalreader.h"
 #include "model/joints/jointlimitsfile.h"
@@ -15,6 +16,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_lineservice {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -206,5 +209,7 @@ void TestLineService::aReadingTheStationRefusesCostsOnlyItself() {
     QVERIFY(refused->isRefused());
 }
 
-QTEST_GUILESS_MAIN(TestLineService)
+TIPSCOPE_TEST_GUILESS_MAIN(TestLineService)
+
+} // namespace tst_lineservice
 #include "tst_lineservice.moc"

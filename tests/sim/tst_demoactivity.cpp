@@ -3,8 +3,11 @@
 // feeder feeds its 2 s and stops; a port without a tool is left alone, and without the activity
 // the demo line changes nothing by itself.
 #include "sim/simline.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_demoactivity {
 
 using namespace tipscope::sim;
 
@@ -131,5 +134,7 @@ void TestDemoActivity::withoutTheActivityTheDemoChangesNothingByItself() {
     QCOMPARE(line->feeder()->fedDmm(), 0.0);
 }
 
-QTEST_GUILESS_MAIN(TestDemoActivity)
+TIPSCOPE_TEST_GUILESS_MAIN(TestDemoActivity)
+
+} // namespace tst_demoactivity
 #include "tst_demoactivity.moc"

@@ -5,9 +5,12 @@
 // its tip was when read is kept with the joint.
 #include "sim/jointshapeset.h"
 #include "sim/simline.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_jointshapeset {
 
 using namespace tipscope::sim;
 using tipscope::protocol::Frame;
@@ -146,5 +149,7 @@ void TestJointShapeSet::aNoisyStationWobblesThroughItsJointsAndKeepsWhatWasRead(
         QVERIFY(qAbs(offset) <= 2);
 }
 
-QTEST_GUILESS_MAIN(TestJointShapeSet)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJointShapeSet)
+
+} // namespace tst_jointshapeset
 #include "tst_jointshapeset.moc"

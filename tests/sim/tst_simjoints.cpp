@@ -6,12 +6,15 @@
 #include "ptyfixtures.h"
 #include "sim/simcontrol.h"
 #include "sim/simline.h"
+#include "testmain.h"
 
 #include <QDateTime>
 #include <QDeadlineTimer>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_simjoints {
 
 using namespace tipscope;
 using namespace tipscope::sim;
@@ -280,5 +283,7 @@ void TestSimJoints::theSimulatorLogsEachJointWithItsTrueValues() {
         5000);
 }
 
-QTEST_GUILESS_MAIN(TestSimJoints)
+TIPSCOPE_TEST_GUILESS_MAIN(TestSimJoints)
+
+} // namespace tst_simjoints
 #include "tst_simjoints.moc"

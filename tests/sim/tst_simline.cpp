@@ -3,10 +3,13 @@
 #include "protocol/valuecodec.h"
 #include "sim/simcontrol.h"
 #include "sim/simline.h"
+#include "testmain.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_simline {
 
 using namespace tipscope::protocol;
 using namespace tipscope::sim;
@@ -534,5 +537,7 @@ void TestSimLine::controlCommandsInjectFaultsAndRefuseNonsense() {
     QVERIFY(executeSimCommand(*line, "stats").contains("requests"));
 }
 
-QTEST_GUILESS_MAIN(TestSimLine)
+TIPSCOPE_TEST_GUILESS_MAIN(TestSimLine)
+
+} // namespace tst_simline
 #include "tst_simline.moc"

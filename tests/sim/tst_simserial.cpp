@@ -1,6 +1,7 @@
 // Scripted sessions with tipscope-sim through a real QSerialPort on a socat PTY pair, through
 // the simulator's own PTY, and over TCP.
 #include "ptyfixtures.h"
+#include "testmain.h"
 
 #include "protocol/framedecoder.h"
 
@@ -13,6 +14,8 @@
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
+
+namespace tst_simserial {
 
 using namespace tipscope::protocol;
 using namespace tipscope::testing;
@@ -362,5 +365,7 @@ void TestSimSerial::pacedJunkDoesNotSilenceTheSimulator() {
     runScript(next, {{rd("SVR", 1), "A9996780"}});
 }
 
-QTEST_GUILESS_MAIN(TestSimSerial)
+TIPSCOPE_TEST_GUILESS_MAIN(TestSimSerial)
+
+} // namespace tst_simserial
 #include "tst_simserial.moc"

@@ -5,9 +5,12 @@
 #include "link/ports/serialportlist.h"
 #include "scratchpty.h"
 #include "scratchsysfs.h"
+#include "testmain.h"
 
 #include <QSerialPort>
 #include <QTest>
+
+namespace tst_describeport {
 
 using namespace tipscope::link;
 
@@ -222,5 +225,7 @@ void TestDescribePort::bareQtPortNameIsDescribedLikeItsPath() {
     QCOMPARE(entry.portName, bareName);
 }
 
-QTEST_GUILESS_MAIN(TestDescribePort)
+TIPSCOPE_TEST_GUILESS_MAIN(TestDescribePort)
+
+} // namespace tst_describeport
 #include "tst_describeport.moc"

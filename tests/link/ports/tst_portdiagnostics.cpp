@@ -3,6 +3,7 @@
 // that owns the device file, and every other error says what happened in a person's words.
 #include "link/ports/portdiagnostics.h"
 #include "scratchpty.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -12,6 +13,8 @@
 
 #include <grp.h>
 #include <unistd.h>
+
+namespace tst_portdiagnostics {
 
 using namespace tipscope::link;
 
@@ -234,5 +237,7 @@ void TestPortDiagnostics::otherErrorsQuoteQtsReason() {
     QVERIFY2(message.contains(meaning), qPrintable(message));
 }
 
-QTEST_GUILESS_MAIN(TestPortDiagnostics)
+TIPSCOPE_TEST_GUILESS_MAIN(TestPortDiagnostics)
+
+} // namespace tst_portdiagnostics
 #include "tst_portdiagnostics.moc"

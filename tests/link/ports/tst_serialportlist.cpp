@@ -2,12 +2,15 @@
 // a rescan that finds the same ports. Adapters cannot be plugged in here, so FakePortList replaces
 // the QSerialPortInfo scan with a list the test edits.
 #include "link/ports/serialportlist.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFileInfo>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_serialportlist {
 
 using namespace tipscope::link;
 
@@ -48,12 +51,16 @@ SerialPortEntry builtInPort(const QString &name) {
 
 } // namespace
 
+} // namespace tst_serialportlist
+
 namespace tipscope::link {
 // Found by QCOMPARE through argument-dependent lookup, so a failure shows which port differed.
 char *toString(const SerialPortEntry &entry) {
     return QTest::toString(entry.displayName() + QStringLiteral(" at ") + entry.systemLocation);
 }
 } // namespace tipscope::link
+
+namespace tst_serialportlist {
 
 class TestSerialPortList : public QObject {
     Q_OBJECT
@@ -299,5 +306,7 @@ void TestSerialPortList::realScanDescribesBuiltInPortsWithTheirDriver() {
     }
 }
 
-QTEST_GUILESS_MAIN(TestSerialPortList)
+TIPSCOPE_TEST_GUILESS_MAIN(TestSerialPortList)
+
+} // namespace tst_serialportlist
 #include "tst_serialportlist.moc"

@@ -3,8 +3,11 @@
 // report's window statistics.
 #include "model/analysis/measurementreport.h"
 #include "model/analysis/measurements.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_measurements {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -236,5 +239,7 @@ void TestMeasurements::theReportGivesEachSeriesItsWindowStatsThreeToALine() {
                           idleLine}));
 }
 
-QTEST_GUILESS_MAIN(TestMeasurements)
+TIPSCOPE_TEST_GUILESS_MAIN(TestMeasurements)
+
+} // namespace tst_measurements
 #include "tst_measurements.moc"

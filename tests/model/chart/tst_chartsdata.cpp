@@ -4,6 +4,7 @@
 #include "model/chart/chartevents.h"
 #include "model/chart/chartframe.h"
 #include "model/chart/chartviewport.h"
+#include "testmain.h"
 
 #include "i18n/translations.h"
 
@@ -11,6 +12,8 @@
 #include <QTest>
 #include <QTranslator>
 #include <random>
+
+namespace tst_chartsdata {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -368,5 +371,7 @@ void TestChartsData::liveEventsKeepTheNewestWithTheirTextsAndAReplayKeepsAll() {
     QVERIFY2(replay.memoryBytes() < kCount * 60, qPrintable(QString::number(replay.memoryBytes())));
 }
 
-QTEST_GUILESS_MAIN(TestChartsData)
+TIPSCOPE_TEST_GUILESS_MAIN(TestChartsData)
+
+} // namespace tst_chartsdata
 #include "tst_chartsdata.moc"

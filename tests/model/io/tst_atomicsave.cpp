@@ -1,11 +1,14 @@
 // The one atomic-save helper: a save replaces the file whole, and a save that cannot be done
 // leaves what was there, leaves no temporary file behind, and says which file and why.
 #include "model/io/atomicsave.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_atomicsave {
 
 using namespace tipscope::model;
 
@@ -80,5 +83,7 @@ void TestAtomicSave::aStreamedSaveThatFailsHalfWayLeavesTheOldFile() {
              QStringList{QStringLiteral("out.csv")});
 }
 
-QTEST_GUILESS_MAIN(TestAtomicSave)
+TIPSCOPE_TEST_GUILESS_MAIN(TestAtomicSave)
+
+} // namespace tst_atomicsave
 #include "tst_atomicsave.moc"

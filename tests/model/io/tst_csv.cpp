@@ -1,8 +1,11 @@
 // The one CSV helper: every text comes back from its cell unchanged (line breaks aside, which
 // become spaces so a record stays one line), and only cells that need quotes get them.
 #include "model/io/csv.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_csv {
 
 using namespace tipscope::model;
 
@@ -67,5 +70,7 @@ void TestCsv::anOpenQuoteIsRefused() {
     QCOMPARE(cells.size(), 3);
 }
 
-QTEST_GUILESS_MAIN(TestCsv)
+TIPSCOPE_TEST_GUILESS_MAIN(TestCsv)
+
+} // namespace tst_csv
 #include "tst_csv.moc"

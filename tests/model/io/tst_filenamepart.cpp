@@ -2,10 +2,13 @@
 // per line) and can never take the file out of its folder (issue 38: a line named
 // "/../../ESCAPED" wrote two folders up).
 #include "model/io/filenamepart.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFileInfo>
 #include <QTest>
+
+namespace tst_filenamepart {
 
 using tipscope::model::io::fileNamePart;
 using tipscope::model::io::kFileNamePartChars;
@@ -56,5 +59,7 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFileNamePart)
+TIPSCOPE_TEST_GUILESS_MAIN(TestFileNamePart)
+
+} // namespace tst_filenamepart
 #include "tst_filenamepart.moc"

@@ -1,9 +1,12 @@
 // readJsonObject(): every way a small JSON settings file can fail comes back as its own kind, so
 // each reader can say it in its own words; a good file comes back as its object.
 #include "model/io/jsonfile.h"
+#include "testmain.h"
 
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_jsonfile {
 
 using namespace tipscope::model::io;
 
@@ -53,5 +56,7 @@ void TestJsonFile::eachFailureHasItsKind() {
     QVERIFY(!std::get<JsonFileProblem>(broken).detail.isEmpty()); // the parser's reason
 }
 
-QTEST_GUILESS_MAIN(TestJsonFile)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJsonFile)
+
+} // namespace tst_jsonfile
 #include "tst_jsonfile.moc"

@@ -3,8 +3,11 @@
 // the limits; heat-ups, wakes and early dips are no joints; a gap, a pulled tool or the heater
 // going off end a joint as incomplete.
 #include "model/joints/jointdetector.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_jointdetector {
 
 using namespace tipscope::model;
 
@@ -472,5 +475,7 @@ void TestJointDetector::
     QCOMPARE(j->verdict, verdict);
 }
 
-QTEST_GUILESS_MAIN(TestJointDetector)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJointDetector)
+
+} // namespace tst_jointdetector
 #include "tst_jointdetector.moc"

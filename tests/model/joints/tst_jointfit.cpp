@@ -1,9 +1,12 @@
 // The local fits the joint detector places its figures with: exact on exact readings, a crossing
 // found where the curve crosses and nowhere else, and an uncertainty that grows with the scatter.
 #include "model/joints/jointfit.h"
+#include "testmain.h"
 
 #include <QTest>
 #include <cmath>
+
+namespace tst_jointfit {
 
 using namespace tipscope::model;
 
@@ -113,5 +116,7 @@ void TestJointFit::aFallOrTooFewReadingsGiveNoReturn() {
     QVERIFY(!fitApproach({{0, 300}, {100, 320}, {200, 330}}, kLevel, kLevel));
 }
 
-QTEST_GUILESS_MAIN(TestJointFit)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJointFit)
+
+} // namespace tst_jointfit
 #include "tst_jointfit.moc"

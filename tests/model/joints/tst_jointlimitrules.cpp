@@ -1,9 +1,12 @@
 // JointLimitRules: the most specific rule judges a joint; rules read from JSON and from the
 // command line's words, and a bad rule is refused with the reason.
 #include "model/joints/jointlimitrules.h"
+#include "testmain.h"
 
 #include <QJsonArray>
 #include <QTest>
+
+namespace tst_jointlimitrules {
 
 using namespace tipscope::model;
 
@@ -117,5 +120,7 @@ void TestJointLimitRules::badJsonIsRefusedNamingTheRule() {
     QVERIFY2(rules.error().contains(QStringLiteral("max_dip_k")), qPrintable(rules.error()));
 }
 
-QTEST_GUILESS_MAIN(TestJointLimitRules)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJointLimitRules)
+
+} // namespace tst_jointlimitrules
 #include "tst_jointlimitrules.moc"

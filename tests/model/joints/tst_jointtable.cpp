@@ -3,9 +3,12 @@
 // spreadsheet reads; and the recovery statistics over the listed joints.
 #include "model/joints/jointstats.h"
 #include "model/joints/jointtable.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_jointtable {
 
 using namespace tipscope::model;
 
@@ -232,5 +235,7 @@ void TestJointTable::theTrendIsEachToolsDailyMedian() {
     QCOMPARE(trends.at(1).days.at(0).day, QDate(2026, 3, 4));
 }
 
-QTEST_GUILESS_MAIN(TestJointTable)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJointTable)
+
+} // namespace tst_jointtable
 #include "tst_jointtable.moc"

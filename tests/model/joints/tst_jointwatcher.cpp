@@ -5,11 +5,14 @@
 #include "model/joints/jointwatcher.h"
 #include "model/session.h"
 #include "sim/demoactivity.h"
+#include "testmain.h"
 
 #include "demosession.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_jointwatcher {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -110,5 +113,7 @@ void TestJointWatcher::settledOnceReadPastAMomentWithNoJointBegunBefore() {
     QVERIFY(watcher.settledUntil(dipMs + 100));
 }
 
-QTEST_GUILESS_MAIN(TestJointWatcher)
+TIPSCOPE_TEST_GUILESS_MAIN(TestJointWatcher)
+
+} // namespace tst_jointwatcher
 #include "tst_jointwatcher.moc"

@@ -1,8 +1,11 @@
 // TipWear: a tip whose recent recoveries are slower than its first ones by more than the share
 // gets one notice; a new tool starts afresh; joints that never recovered do not count.
 #include "model/joints/tipwear.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_tipwear {
 
 using namespace tipscope::model;
 
@@ -111,5 +114,7 @@ void TestTipWear::theRecentMedianIsWhatTheBaselineIsComparedWith() {
     QVERIFY(!wear.recentMs(kDme, 2));
 }
 
-QTEST_GUILESS_MAIN(TestTipWear)
+TIPSCOPE_TEST_GUILESS_MAIN(TestTipWear)
+
+} // namespace tst_tipwear
 #include "tst_tipwear.moc"

@@ -5,6 +5,7 @@
 #include "model/recording/chartcsv.h"
 #include "model/recording/chartcsvreader.h"
 #include "model/recording/chartrecorder.h"
+#include "testmain.h"
 
 #include <QBuffer>
 #include <QFileInfo>
@@ -13,6 +14,8 @@
 #include <QTest>
 #include <csignal>
 #include <sys/resource.h>
+
+namespace tst_chartscsv {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -352,5 +355,7 @@ void TestChartsCsv::anExportReachingIntoSummariesSaysWhereItsSamplesStart() {
     QVERIFY(!ChartCsvWriter::fullRateFrom(single, channels, kT0));
 }
 
-QTEST_GUILESS_MAIN(TestChartsCsv)
+TIPSCOPE_TEST_GUILESS_MAIN(TestChartsCsv)
+
+} // namespace tst_chartscsv
 #include "tst_chartscsv.moc"

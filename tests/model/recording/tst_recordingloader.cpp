@@ -1,6 +1,7 @@
 // RecordingLoader reads on a thread of its own and hands the recording over in the caller's
 // thread, reports progress, and can be cancelled or deleted while a FIFO sends nothing.
 #include "support/fifowriter.h"
+#include "testmain.h"
 
 #include "model/recording/recordingloader.h"
 
@@ -8,6 +9,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
+
+namespace tst_recordingloader {
 
 using namespace tipscope::model;
 
@@ -116,5 +119,7 @@ void TestRecordingLoader::aLoaderDeletedWhileReadingStopsItsThread() {
 #endif
 }
 
-QTEST_GUILESS_MAIN(TestRecordingLoader)
+TIPSCOPE_TEST_GUILESS_MAIN(TestRecordingLoader)
+
+} // namespace tst_recordingloader
 #include "tst_recordingloader.moc"

@@ -4,6 +4,7 @@
 // that cannot be played says why. A workspace line of kind "recording" is played by the
 // workspace, found beside the workspace file.
 #include "jointrecording.h"
+#include "testmain.h"
 
 #include "model/recording/recordingplayback.h"
 #include "model/workspace/linetile.h"
@@ -15,6 +16,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_recordingplayback {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -205,5 +208,7 @@ void TestRecordingPlayback::aWorkspaceLinePlaysTheRecordingBesideIt() {
              qPrintable(tile.problems.first().text));
 }
 
-QTEST_GUILESS_MAIN(TestRecordingPlayback)
+TIPSCOPE_TEST_GUILESS_MAIN(TestRecordingPlayback)
+
+} // namespace tst_recordingplayback
 #include "tst_recordingplayback.moc"

@@ -3,12 +3,15 @@
 // capped by the bytes actually read (a FIFO too), its comment lines bounded, and the memory it
 // takes bounded by twice its size; a read can be followed and cancelled.
 #include "model/recording/chartcsvreader.h"
+#include "testmain.h"
 
 #include "support/fifowriter.h"
 
 #include <QBuffer>
 #include <QElapsedTimer>
 #include <QTest>
+
+namespace tst_replay {
 
 using namespace tipscope::model;
 
@@ -218,5 +221,7 @@ void TestReplay::aFileDenserThanTipScopeWritesIsRefusedBeforeTwiceItsSize() {
              qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestReplay)
+TIPSCOPE_TEST_GUILESS_MAIN(TestReplay)
+
+} // namespace tst_replay
 #include "tst_replay.moc"

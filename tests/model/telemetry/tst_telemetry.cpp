@@ -2,9 +2,12 @@
 // through one coalesced signal rather than one per sample. No timing is asserted: a burst is
 // appended without returning to the event loop, so it must be reported by a single emission.
 #include "model/telemetry/telemetry.h"
+#include "testmain.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_telemetry {
 
 using namespace tipscope::model;
 
@@ -129,5 +132,7 @@ void TestTelemetry::signalRateIsClampedToASaneRange() {
     QCOMPARE(telemetry.maxSignalsPerSecond(), kept);
 }
 
-QTEST_GUILESS_MAIN(TestTelemetry)
+TIPSCOPE_TEST_GUILESS_MAIN(TestTelemetry)
+
+} // namespace tst_telemetry
 #include "tst_telemetry.moc"

@@ -2,10 +2,13 @@
 // "name: value unit" form tipscope-bench scripts grep for. Only the form is checked, never
 // the figures: the machines running the tests are shared and noisy.
 #include "model/telemetry/telemetrybench.h"
+#include "testmain.h"
 
 #include <QRegularExpression>
 #include <QTest>
 #include <QTextStream>
+
+namespace tst_telemetrybench {
 
 class TestTelemetryBench : public QObject {
     Q_OBJECT
@@ -38,5 +41,7 @@ void TestTelemetryBench::benchPrintsItsFourFigures() {
     QVERIFY(bytes > 0 && bytes <= 16);
 }
 
-QTEST_GUILESS_MAIN(TestTelemetryBench)
+TIPSCOPE_TEST_GUILESS_MAIN(TestTelemetryBench)
+
+} // namespace tst_telemetrybench
 #include "tst_telemetrybench.moc"

@@ -2,12 +2,15 @@
 // order, keeps every value exactly, answers point and raw-window queries, and stays within 16
 // bytes per sample per series measured on the real heap.
 #include "model/telemetry/telemetrybuffer.h"
+#include "testmain.h"
 
 #include <QTest>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
+
+namespace tst_telemetrybuffer {
 
 using namespace tipscope::model;
 
@@ -289,5 +292,7 @@ void TestTelemetryBuffer::gapsOlderThanTheOldestSampleAreDropped() {
     QCOMPARE(buffer.gaps().size(), 0);
 }
 
-QTEST_GUILESS_MAIN(TestTelemetryBuffer)
+TIPSCOPE_TEST_GUILESS_MAIN(TestTelemetryBuffer)
+
+} // namespace tst_telemetrybuffer
 #include "tst_telemetrybuffer.moc"

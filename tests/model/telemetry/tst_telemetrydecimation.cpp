@@ -2,8 +2,11 @@
 // on seeded random data, across the ring's wrap-around and at every summary level, and a lone
 // spike in a day of flat data is never lost.
 #include "telemetryreference.h"
+#include "testmain.h"
 
 #include <QTest>
+
+namespace tst_telemetrydecimation {
 
 using namespace tipscope::model;
 using namespace tipscope::model::test;
@@ -315,5 +318,7 @@ void TestTelemetryDecimation::emptyOrReversedWindowsGiveNothing() {
     QCOMPARE(buffer.decimate(0, 0, 1000, 10).size(), 1);
 }
 
-QTEST_GUILESS_MAIN(TestTelemetryDecimation)
+TIPSCOPE_TEST_GUILESS_MAIN(TestTelemetryDecimation)
+
+} // namespace tst_telemetrydecimation
 #include "tst_telemetrydecimation.moc"

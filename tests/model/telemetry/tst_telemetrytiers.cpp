@@ -6,9 +6,12 @@
 #include "model/telemetry/telemetry.h"
 #include "model/telemetry/telemetrybuffer.h"
 #include "telemetryreference.h"
+#include "testmain.h"
 
 #include <QTest>
 #include <cmath>
+
+namespace tst_telemetrytiers {
 
 using namespace tipscope::model;
 using tipscope::model::test::SampleGenerator;
@@ -380,5 +383,7 @@ void TestTelemetryTiers::telemetryMakesTieredBuffersUnlessToldACapacity() {
     QCOMPARE(telemetry.ensureBuffer(QStringLiteral("01/port1"), kSeries).tiers(), TelemetryTiers());
 }
 
-QTEST_GUILESS_MAIN(TestTelemetryTiers)
+TIPSCOPE_TEST_GUILESS_MAIN(TestTelemetryTiers)
+
+} // namespace tst_telemetrytiers
 #include "tst_telemetrytiers.moc"

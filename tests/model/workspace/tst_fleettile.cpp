@@ -4,6 +4,7 @@
 // says since when by the tile's clock; the last joint's verdict is the port's; tiles sort by
 // name as people count, by line, and by state with the worst first.
 #include "model/workspace/fleettile.h"
+#include "testmain.h"
 
 #include "model/stationmodel.h"
 #include "model/workspace/workspace.h"
@@ -17,6 +18,8 @@
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_fleettile {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -195,5 +198,7 @@ void TestFleetTile::tilesSortByNameAsPeopleCountByLineAndWorstFirst() {
     qDeleteAll(tiles);
 }
 
-QTEST_GUILESS_MAIN(TestFleetTile)
+TIPSCOPE_TEST_GUILESS_MAIN(TestFleetTile)
+
+} // namespace tst_fleettile
 #include "tst_fleettile.moc"

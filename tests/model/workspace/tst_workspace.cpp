@@ -4,11 +4,14 @@
 // its simulator is back on the same port, then polls again. Each line's joints are judged by its
 // own limits, and its devices carry the names the workspace gives them.
 #include "model/workspace/workspace.h"
+#include "testmain.h"
 
 #include "support/programrun.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+namespace tst_workspace {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -198,5 +201,7 @@ void TestWorkspace::aLineJoinsUnderANewNameAndEveryPortIsWatched() {
     }
 }
 
-QTEST_GUILESS_MAIN(TestWorkspace)
+TIPSCOPE_TEST_GUILESS_MAIN(TestWorkspace)
+
+} // namespace tst_workspace
 #include "tst_workspace.moc"

@@ -2,12 +2,15 @@
 // workspace, of a later version, with duplicate line names or a wrong field is refused with the
 // line and the field named.
 #include "model/workspace/workspacefile.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QTemporaryDir>
 #include <QTest>
+
+namespace tst_workspacefile {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -285,5 +288,7 @@ void TestWorkspaceFile::anUnreadableFileSaysWhy() {
     QVERIFY2(bad.error().contains(QStringLiteral("is not a JSON object")), qPrintable(bad.error()));
 }
 
-QTEST_GUILESS_MAIN(TestWorkspaceFile)
+TIPSCOPE_TEST_GUILESS_MAIN(TestWorkspaceFile)
+
+} // namespace tst_workspacefile
 #include "tst_workspacefile.moc"
