@@ -15,7 +15,11 @@
 #include "ptyfixtures.h"
 
 #include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -27,14 +31,24 @@ using testing::CfxConsumer;
 using testing::RabbitMqBroker;
 using testing::SimProcess;
 
+// How many joints the journal at `path` holds for the board `serial`; 0 while it cannot be read.
+qint64 jointsOnBoard(journal::JournalReader &reader, const QString &path, const QString &serial) {
+    journal::JointFilter filter;
+    filter.boardSerial = serial;
+    const auto count =
+        reader.keepOpen(path) ? reader.countJoints(filter) : protocol::Outcome<qint64>(qint64(0));
+    return count ? *count : 0;
+}
+
 class TstCfxAgent : public QObject {
     Q_OBJECT
 
     std::unique_ptr<RabbitMqBroker> m_broker;
 
-    static QStringList namesOf(const CfxConsumer &consumer) {
+    static QStringList namesOf(const CfxConsumer &consumer) { return namesIn(consumer.messages()); }
+    static QStringList namesIn(const QList<QJsonObject> &messages) {
         QStringList names;
-        for (const QJsonObject &m : consumer.messages())
+        for (const QJsonObject &m : messages)
             names << m.value(QStringLiteral("envelope"))
                          .toObject()
                          .value(QStringLiteral("MessageName"))
@@ -48,6 +62,18 @@ class TstCfxAgent : public QObject {
                 {QStringLiteral("port"), m_broker->port()},
                 {QStringLiteral("address"), QStringLiteral("/exchange/amq.topic")},
                 {QStringLiteral("heartbeat_s"), 300}};
+    }
+
+    // The consumer waiting for `count` messages, and the demo line's agent publishing CFX only,
+    // started once its two endpoints said they are connected.
+    void startCfxOnly(CfxConsumer &consumer, int count, AgentProcess &agent) const {
+        QVERIFY2(consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), count),
+                 qPrintable(consumer.output()));
+        agent.configure(QStringLiteral("demo"), 1, {},
+                        {{QStringLiteral("cfx"), cfxSection()}, {QStringLiteral("broker"), false}});
+        QString error;
+        QVERIFY2(agent.start(&error), qPrintable(error));
+        QVERIFY2(consumer.waitForMessages(2), qPrintable(agent.log()));
     }
 
 private Q_SLOTS:
@@ -100,27 +126,18 @@ private Q_SLOTS:
     // once the context names none.
     void aBoardNamedInTheContextIsATransaction() {
         CfxConsumer consumer;
-        QVERIFY2(consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), 7),
-                 qPrintable(consumer.output()));
         AgentProcess agent;
-        agent.configure(QStringLiteral("demo"), 1, {},
-                        {{QStringLiteral("cfx"), cfxSection()}, {QStringLiteral("broker"), false}});
-        QString error;
-        QVERIFY2(agent.start(&error), qPrintable(error));
-        QVERIFY2(consumer.waitForMessages(2), qPrintable(agent.log()));
+        startCfxOnly(consumer, 7, agent);
+        if (QTest::currentTestFailed())
+            return;
         const QString contextPath = journal::workContextPathFor(agent.journalPath());
         model::WorkContext board;
         board.boardSerial = QStringLiteral("SN-CFX-1");
         QVERIFY(journal::writeWorkContext(contextPath, board));
         QVERIFY2(consumer.waitForMessages(3), qPrintable(agent.log()));
         journal::JournalReader reader;
-        journal::JointFilter filter;
-        filter.boardSerial = board.boardSerial;
         const auto jointsOnTheBoard = [&] {
-            const auto count = reader.keepOpen(agent.journalPath())
-                                   ? reader.countJoints(filter)
-                                   : protocol::Outcome<qint64>(qint64(0));
-            return count ? *count : 0;
+            return jointsOnBoard(reader, agent.journalPath(), board.boardSerial);
         };
         QTRY_VERIFY_WITH_TIMEOUT(jointsOnTheBoard() > 0, 60000);
         QVERIFY(journal::writeWorkContext(contextPath, model::WorkContext()));
@@ -151,6 +168,101 @@ private Q_SLOTS:
                      .value(QStringLiteral("SolderPoints"))
                      .toArray()
                      .isEmpty());
+    }
+
+    // SIGKILL while a board is open, then the agent again on the same journal, as a plant's
+    // service manager restarts it: the board still ends once, with every joint the journal holds
+    // for it, and no message of the spool reaches the consumer under two UniqueIDs (one sent
+    // again after the kill keeps its UniqueID).
+    void aKilledAgentLosesNothingAndSendsNothingTwice() {
+        CfxConsumer consumer;
+        AgentProcess agent;
+        startCfxOnly(consumer, 1000, agent);
+        if (QTest::currentTestFailed())
+            return;
+        const QString contextPath = journal::workContextPathFor(agent.journalPath());
+        model::WorkContext board;
+        board.boardSerial = QStringLiteral("SN-KILLED-1");
+        QVERIFY(journal::writeWorkContext(contextPath, board));
+        journal::JournalReader reader;
+        const auto jointsOnTheBoard = [&] {
+            return jointsOnBoard(reader, agent.journalPath(), board.boardSerial);
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(jointsOnTheBoard() > 0, 60000);
+        QVERIFY2(consumer.waitUntil([](const QList<QJsonObject> &messages) {
+            return namesIn(messages).contains(QStringLiteral("CFX.Production.WorkStarted"));
+        }),
+                 qPrintable(agent.log()));
+        agent.kill();
+        const qint64 jointsOfTheKilledAgent = jointsOnTheBoard();
+
+        // The board goes on with the next agent: it holds joints of both.
+        QString error;
+        QVERIFY2(agent.start(&error), qPrintable(error));
+        QVERIFY2(consumer.waitUntil([](const QList<QJsonObject> &messages) {
+            return namesIn(messages).count(QStringLiteral("CFX.EndpointConnected")) >= 4;
+        }),
+                 qPrintable(agent.log()));
+        QTRY_VERIFY_WITH_TIMEOUT(jointsOnTheBoard() > jointsOfTheKilledAgent, 60000);
+        QVERIFY(journal::writeWorkContext(contextPath, model::WorkContext()));
+        QVERIFY2(consumer.waitUntil(
+                     [](const QList<QJsonObject> &messages) {
+                         return namesIn(messages).contains(
+                             QStringLiteral("CFX.Production.WorkCompleted"));
+                     },
+                     60000),
+                 qPrintable(agent.log()));
+        QCOMPARE(agent.stop(), 0);
+        QVERIFY2(consumer.complaints().isEmpty(), qPrintable(consumer.complaints().join('\n')));
+
+        // What the spool sends (the board's messages, faults) has one UniqueID per message:
+        // the same name, station and transaction, or the same fault occurrence, is one id.
+        QMap<QString, QSet<QString>> idsOf;
+        QJsonObject unitsProcessed;
+        for (const QJsonObject &m : consumer.messages()) {
+            const QJsonObject envelope = m.value(QStringLiteral("envelope")).toObject();
+            const QString name = envelope.value(QStringLiteral("MessageName")).toString();
+            const QJsonObject body = envelope.value(QStringLiteral("MessageBody")).toObject();
+            QString what;
+            if (name.startsWith(QLatin1String("CFX.Production.")))
+                what = body.value(QStringLiteral("TransactionID")).toString() +
+                       body.value(QStringLiteral("TransactionId")).toString();
+            else if (name.startsWith(QLatin1String("CFX.ResourcePerformance.Fault")))
+                what = body.value(QStringLiteral("Fault"))
+                           .toObject()
+                           .value(QStringLiteral("FaultOccurrenceId"))
+                           .toString();
+            else
+                continue; // said live, once per connection
+            QVERIFY2(!what.isEmpty(), qPrintable(QJsonDocument(envelope).toJson()));
+            idsOf[name + QLatin1Char(' ') + envelope.value(QStringLiteral("Source")).toString() +
+                  QLatin1Char(' ') + what]
+                .insert(envelope.value(QStringLiteral("UniqueID")).toString());
+            if (name == QLatin1String("CFX.Production.Processing.UnitsProcessed"))
+                unitsProcessed = body;
+        }
+        for (auto it = idsOf.cbegin(); it != idsOf.cend(); ++it)
+            QVERIFY2(it.value().size() == 1,
+                     qPrintable(it.key() + QStringLiteral(": ") + it.value().values().join(' ')));
+        const QStringList names = namesOf(consumer);
+        for (const char *once :
+             {"CFX.Production.WorkStarted", "CFX.Production.Processing.UnitsProcessed",
+              "CFX.Production.WorkCompleted"}) {
+            QStringList ids;
+            for (const QString &key : idsOf.keys())
+                if (key.startsWith(QLatin1String(once) + QLatin1Char(' ')))
+                    ids << key;
+            QVERIFY2(ids.size() == 1, qPrintable(QString::fromLatin1(once) + QLatin1Char(' ') +
+                                                 names.join(QLatin1Char(' '))));
+        }
+        // Every joint journaled for the board, by the killed agent and by the next, is in it.
+        const qint64 journaled = jointsOnTheBoard();
+        QCOMPARE(unitsProcessed.value(QStringLiteral("CommonProcessData"))
+                     .toObject()
+                     .value(QStringLiteral("SolderPoints"))
+                     .toArray()
+                     .size(),
+                 journaled);
     }
 
     // A station on a simulator steered by the test: its tool leaves the stand, then a port
