@@ -166,13 +166,18 @@ void TestCliWire::lateAnswersAreNeverTakenForTheReadBack() {
         m_line.sim().command(QStringLiteral("get ") + changes.keys().join(QLatin1Char(' ')));
     for (auto it = changes.cbegin(); it != changes.cend(); ++it) {
         const QString now = QStringLiteral("%1=%2").arg(it.key()).arg(it.value().toInt());
-        const QString old =
-            QStringLiteral("%1=%2").arg(it.key()).arg(before.value(it.key()).toString().toInt());
+        // A saved profile holds each value as {"name", "raw", "value"}.
+        QVERIFY2(before.value(it.key()).toObject().contains(QStringLiteral("raw")),
+                 qPrintable(it.key()));
+        const QString old = QStringLiteral("%1=%2").arg(it.key()).arg(
+            before.value(it.key()).toObject().value(QStringLiteral("raw")).toString().toInt());
         const QStringList fields = onDevice.split(QLatin1Char(' '));
         const bool held = notSent.contains(it.key()) ? fields.contains(old)
                           : unanswered.contains(it.key())
                               ? fields.contains(now) || fields.contains(old)
                               : fields.contains(now);
+        if (!held) // Qt Test cuts a long message: the whole report, to tell which case it was
+            qWarning().noquote() << r.out << r.err;
         QVERIFY2(
             held,
             qPrintable(QStringLiteral("%1 on the device: %2\n%3").arg(it.key(), onDevice, r.out)));
