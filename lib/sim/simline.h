@@ -90,8 +90,8 @@ public:
     void setChunkMs(int ms) { m_chunkNs = qMax(0, ms) * 1'000'000LL; }
     void setClockRunning(bool running);
     // How often the running clock moves the devices' simulated time (default 20 ms). The
-    // physics steps by the time elapsed, so a coarser tick only makes changes show in steps. A
-    // request arriving when a tick is due takes its place.
+    // physics steps by the time elapsed, so a coarser tick only makes changes show in steps
+    // between requests: a request catches the devices up to the instant it arrives.
     void setTickMs(int ms) { m_tickTimer.setInterval(qMax(1, ms)); }
     void advance(int ms);
     // The demo's station and feeder at work (DemoActivity); off by default, so tests see
@@ -149,6 +149,7 @@ private:
     [[nodiscard]] qint64 byteNs() const { return m_baud > 0 ? 10'000'000'000LL / m_baud : 0; }
     [[nodiscard]] bool chance(double share);
     void tick();
+    void catchUpTo(qint64 ns);
     void reportJoints();
 
     std::vector<std::unique_ptr<SimDevice>> m_devices;
