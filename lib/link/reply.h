@@ -38,6 +38,9 @@ public:
     [[nodiscard]] int nakCode() const { return m_nakCode; }
     [[nodiscard]] int attempts() const { return m_attempts; }
     [[nodiscard]] qint64 latencyUs() const { return m_latencyUs; }
+    // How long before finished() the device took the value it answered with (0 without an
+    // answer): a reading is stamped at the instant it describes, not when it was decoded.
+    [[nodiscard]] qint64 answerAgeUs() const { return m_answerAgeUs; }
     // The reply deletes itself once finished() has been delivered: what deleteLater() in a slot
     // does, without posting an event (a wake-up of the event loop) for every request of a poll.
     void setDeleteWhenFinished(bool on) { m_deleteWhenFinished = on; }
@@ -57,6 +60,7 @@ private:
     int m_nakCode = 0;
     int m_attempts = 0;
     qint64 m_latencyUs = 0;
+    qint64 m_answerAgeUs = 0;
     bool m_deleteWhenFinished = false;
     bool *m_deletedDuringFinish = nullptr; // set while finished() is being delivered
 };

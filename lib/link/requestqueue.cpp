@@ -154,6 +154,7 @@ void RequestQueue::transmit() {
     ++m_stats.sent;
     m_stats.sentBytes += bytes.size();
     m_bytesToConfirm = bytes.size();
+    e.requestBytes = int(bytes.size());
     m_state = State::Writing;
     m_timer.start(kWriteWatchdogMs + int(2 * wireMs(int(bytes.size()))));
     m_tap.tx(bytes);
@@ -245,7 +246,7 @@ void RequestQueue::onFrame(const DecodeEvent &ev) {
     const Request &r = m_current->request;
     const bool checked = r.format && r.header == Header::Read && ev.frame.header == Header::Answer;
     if (!checked || decodeAnswer(*r.format, ev.frame.data)) {
-        complete(ev.frame);
+        complete(ev.frame, int(ev.raw.size()));
         return;
     }
     // A well-framed answer whose data field means nothing for the command is as good as a
@@ -268,10 +269,11 @@ void RequestQueue::onTimer() {
         attemptFailed(ReplyError::Timeout, tr("no answer"));
 }
 
-void RequestQueue::complete(const Frame &answer) {
+void RequestQueue::complete(const Frame &answer, int answerBytes) {
     m_timer.stop();
     Entry &e = *m_current;
     const qint64 latency = nowUs() - e.lastSentUs;
+    e.answerAgeUs = answerAgeUs(e, answerBytes);
     m_stats.recordAnswer(latency, nowMs());
     if (answer.header == Header::Nak) {
         const int code = parseNumber(answer.data).value_or(-1);
@@ -289,6 +291,17 @@ void RequestQueue::complete(const Frame &answer) {
         return;
     }
     finishCurrent(ReplyError::None, {}, answer);
+}
+
+// The device took the value it answers with after the request's last byte reached it and before
+// its answer's first byte left: the middle of that window, as far as the wire's own time tells
+// it. A value stamped when its answer was decoded is older than its stamp by the answer's bytes
+// on the wire (8 ms for a tip reading at 19200 baud) and any wait for the event loop since.
+qint64 RequestQueue::answerAgeUs(const Entry &e, int answerBytes) const {
+    const qint64 now = nowUs();
+    const qint64 reached = e.lastSentUs + qint64(wireMs(e.requestBytes) * 1000);
+    const qint64 answered = qMax(reached, now - qint64(wireMs(answerBytes) * 1000));
+    return qBound<qint64>(0, now - (reached + answered) / 2, now - e.lastSentUs);
 }
 
 bool RequestQueue::canRetry(const Entry &e) const {
@@ -344,6 +357,7 @@ void RequestQueue::finishCurrent(ReplyError error, const QString &why, const Fra
         r->m_attempts = e.attempts;
         r->m_nakCode = nak;
         r->m_latencyUs = nowUs() - e.firstSentUs;
+        r->m_answerAgeUs = error == ReplyError::None ? e.answerAgeUs : 0;
         r->finish(error, why);
     }
 }

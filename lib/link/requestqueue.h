@@ -139,6 +139,8 @@ private:
         qint64 firstSentUs = 0;
         qint64 lastSentUs = 0;
         qint64 garbageBytes = 0; // bytes outside any frame while it was open, for the reason
+        int requestBytes = 0;    // of the last attempt
+        qint64 answerAgeUs = 0;  // see answerAgeUs()
         [[nodiscard]] bool wanted() const;
     };
     enum class State { Idle, Writing, Waiting, Gap };
@@ -158,7 +160,8 @@ private:
     void startGap();
     void onFrame(const protocol::DecodeEvent &event);
     void onStray(const protocol::DecodeEvent &event);
-    void complete(const protocol::Frame &answer);
+    void complete(const protocol::Frame &answer, int answerBytes);
+    [[nodiscard]] qint64 answerAgeUs(const Entry &e, int answerBytes) const;
     void attemptFailed(ReplyError error, const QString &why);
     void finishCurrent(ReplyError error, const QString &why, const protocol::Frame &answer = {});
     void failEverything(ReplyError error, const QString &why);

@@ -169,7 +169,7 @@ Reply *Parameter::refresh(Priority priority) {
     reply->setDeleteWhenFinished(true);
     connect(reply, &Reply::finished, this, [this, reply, wasFailed, failure, byLine] {
         if (reply->ok()) {
-            deviceReported(reply->answer().data);
+            deviceReported(reply->answer().data, double(reply->answerAgeUs()) / 1000);
             return;
         }
         if (m_state == State::Reading && wasFailed) {
@@ -195,9 +195,10 @@ Reply *Parameter::refresh(Priority priority) {
     return reply;
 }
 
-void Parameter::deviceReported(const QByteArray &data) {
+void Parameter::deviceReported(const QByteArray &data, double ageMs) {
     if (!m_read)
         return;
+    m_reportedAgeMs = ageMs;
     const auto v = decodeAnswer(*m_read, data);
     if (!v) {
         m_device.logCommunication(
@@ -299,7 +300,7 @@ void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
             readBack(written, id, true);
             return;
         }
-        deviceReported(reply->answer().data);
+        deviceReported(reply->answer().data, double(reply->answerAgeUs()) / 1000);
         if (!wrote || !m_value || !confirms(*m_read, *wrote, *m_value)) {
             fail(ParameterTr::tr("the device reports %1 after %2 was written")
                      .arg(displayText(), formatValue(*m_read, wrote.value_or(Value()),

@@ -85,8 +85,12 @@ public:
     // nothing was started: no edit is pending (setEdit() of the value the device holds leaves
     // none) or a write of this parameter is still running.
     quint64 apply();
-    // The value the device reported (a poll or a read-back); never written back.
-    void deviceReported(const QByteArray &data);
+    // The value the device reported (a poll or a read-back); never written back. `ageMs`: how
+    // long before now the device took it (link::Reply::answerAgeUs).
+    void deviceReported(const QByteArray &data, double ageMs = 0);
+    // The age the last reported value had when it was reported: an updated() handler that
+    // stamps a sample stamps it at now − this, the instant the value describes.
+    [[nodiscard]] double reportedAgeMs() const { return m_reportedAgeMs; }
     // For volatile values (W-STx, the feeder's mode, speed, length): false after TipScope wrote
     // a new value until W-NVS saved it. What the device held before TipScope came cannot be known.
     [[nodiscard]] bool isSavedToMemory() const;
@@ -116,6 +120,7 @@ private:
     std::optional<protocol::ResolvedCommand> m_read;
     std::optional<protocol::ResolvedCommand> m_write;
     std::optional<protocol::Value> m_value;
+    double m_reportedAgeMs = 0;
     QByteArray m_raw;
     std::optional<qint64> m_edit;
     quint64 m_runningWrite = 0; // the id of the write under way, 0 when none

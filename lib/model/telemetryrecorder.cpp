@@ -1,5 +1,7 @@
 #include "model/telemetryrecorder.h"
 
+#include <cmath>
+
 namespace tipscope::model {
 
 namespace {
@@ -71,6 +73,17 @@ void TelemetryRecorder::gapOnNoAnswer(Parameter *reading, const TelemetryKey &ke
             [this, key] { m_telemetry.markGap(key, m_clock(), TelemetryGap::Cause::NoAnswer); });
 }
 
+// A sample is stamped at the instant its tip reading describes, not when the answer was decoded:
+// a joint's start and recovery are measured against the station's own moments (and a customer's
+// clock), and the answer's bytes and the event loop would make every reading look younger.
+// Never before the buffer's last sample: queries binary-search on time.
+qint64 TelemetryRecorder::sampleTime(const TelemetryKey &key, const Parameter &tip) const {
+    const qint64 at = m_clock() - std::llround(tip.reportedAgeMs());
+    const TelemetryBuffer *buffer = m_telemetry.buffer(key);
+    return buffer && buffer->size() + buffer->summaryCount() > 0 ? qMax(at, buffer->lastTime())
+                                                                 : at;
+}
+
 void TelemetryRecorder::watchStation(StationModel *station) {
     using protocol::Role;
     for (PortModel *port : station->ports()) {
@@ -82,7 +95,7 @@ void TelemetryRecorder::watchStation(StationModel *station) {
             continue;
         gapOnNoAnswer(tip, key);
         // A sample per tip-temperature reading; the other series carry their latest values.
-        connect(tip, &Parameter::updated, this, [this, station, port, key] {
+        connect(tip, &Parameter::updated, this, [this, station, port, key, tip] {
             // A series starting at 0 before its first reading would draw a false drop and spoil
             // the measurements: record once the setpoint, power, status and temperatures are
             // known (a status of 0 is "working"). A status the station does not give is taken
@@ -96,7 +109,7 @@ void TelemetryRecorder::watchStation(StationModel *station) {
                 carried(station->parameter(Role::TransformerTemperature), Need::Auxiliary);
             if (!status || !setpoint || !power || !transistor || !transformer)
                 return;
-            m_telemetry.append(key, m_clock(),
+            m_telemetry.append(key, sampleTime(key, *tip),
                                {qint32(port->tipTemperature().value_or(0)), *setpoint, *power,
                                 *status, *transistor, *transformer});
         });

@@ -43,6 +43,7 @@ private:
     void watchStation(StationModel *station);
     void watchFeeder(FeederModel *feeder);
     void gapOnNoAnswer(Parameter *reading, const TelemetryKey &key);
+    [[nodiscard]] qint64 sampleTime(const TelemetryKey &key, const Parameter &tip) const;
 
     Telemetry &m_telemetry;
     Clock m_clock;

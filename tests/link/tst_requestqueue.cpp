@@ -131,6 +131,7 @@ private Q_SLOTS:
     void unreadableDataFieldIsCorruptedAndRetried();
     void answerBudgetStartsWhenTheRequestIsWritten();
     void answerLaterThanTheBudgetIsStray();
+    void anAnswerSaysHowOldItsValueIs();
     void garbageInsteadOfAnAnswerIsCountedInTheReason();
     void afterATimeoutTheSameCommandWaitsForTheLateAnswer();
     void aRetryTakesTheLateAnswerOfTheAttemptBeforeAndHoldsTheNextRequest();
@@ -648,6 +649,39 @@ void TestRequestQueue::answerLaterThanTheBudgetIsStray() {
     QTRY_COMPARE_WITH_TIMEOUT(b.queue.stats().stray, 1, kNoAnswerWaitMs);
     QVERIFY(!reply->ok());
     QCOMPARE(b.transport.writes().size(), 1);
+}
+
+// A value is as old as the time since the device took it: after the request's last byte reached
+// it and before its answer's first byte left, never when the answer was decoded. A reading
+// stamped at its decoding looked younger by the answer's bytes on the wire and every wait since.
+void TestRequestQueue::anAnswerSaysHowOldItsValueIs() {
+    Bench b(quickSettings(0, 200));
+    constexpr int kAnswerAfterMs = 60;
+    b.transport.setResponder([&](const Frame &request, int) {
+        b.transport.answer(answerTo(request, "00350").encode(), kAnswerAfterMs);
+        return QByteArray();
+    });
+    Reply *reply = b.read("ST1");
+    QTRY_VERIFY_WITH_TIMEOUT(reply->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(reply->ok(), qPrintable(reply->errorString()));
+    const double byteUs = 10.0 * 1e6 / b.transport.baudRate();
+    const qint64 requestUs = qint64(byteUs * double(reply->request().encode().size()));
+    const qint64 answerUs = qint64(byteUs * double(reply->answer().encode().size()));
+    const QString said = QStringLiteral("age %1 us, latency %2 us, request %3 us, answer %4 us")
+                             .arg(reply->answerAgeUs())
+                             .arg(reply->latencyUs())
+                             .arg(requestUs)
+                             .arg(answerUs);
+    QVERIFY2(reply->latencyUs() >= kAnswerAfterMs * 1000, qPrintable(said));
+    QVERIFY2(reply->answerAgeUs() >= answerUs, qPrintable(said));
+    QVERIFY2(reply->answerAgeUs() <= reply->latencyUs() - requestUs, qPrintable(said));
+
+    // A refusal carries no value, so no age.
+    b.transport.setResponder([](const Frame &request, int) { return nakTo(request, 4).encode(); });
+    Reply *refused = b.read("ST2");
+    QTRY_VERIFY_WITH_TIMEOUT(refused->isFinished(), kNoAnswerWaitMs);
+    QCOMPARE(refused->error(), ReplyError::Nak);
+    QCOMPARE(refused->answerAgeUs(), 0);
 }
 
 // 10 MB of junk on the line was reported as "no answer", which hides a wrong baud rate or noise.
