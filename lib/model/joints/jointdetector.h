@@ -111,6 +111,7 @@ private:
     [[nodiscard]] std::optional<JointRecord> finish(End end, qint64 endMs);
     void estimateStart(JointRecord &joint) const;
     void estimateLowest(JointRecord &joint) const;
+    [[nodiscard]] std::optional<double> vertexDepth(size_t low) const;
     void estimateRecovery(JointRecord &joint) const;
     struct Return {
         size_t back = 0; // the first reading of the run back in the band; 0: none

@@ -86,6 +86,8 @@ private Q_SLOTS:
     void aReadingBackInTheBandByWobbleDoesNotEndTheJoint();
     void aSlowRecoveryIsPlacedFinerThanTheSpacingAndTheWholeDegrees();
     void aDeepSlowReturnOnAWobblingTipIsPlacedByItsWholeClimb();
+    void theDipIsGivenWithAnIntervalThatHoldsIt_data();
+    void theDipIsGivenWithAnIntervalThatHoldsIt();
     void aRecoveryBetweenReadingsFarApartIsBoundedAndJudgedOnlyWhereTheBoundsAllow_data();
     void aRecoveryBetweenReadingsFarApartIsBoundedAndJudgedOnlyWhereTheBoundsAllow();
 };
@@ -444,6 +446,58 @@ void TestJointDetector::aDeepSlowReturnOnAWobblingTipIsPlacedByItsWholeClimb() {
         QVERIFY2(std::abs(error) <= double(j->recoveryUncertaintyMs), qPrintable(all));
     }
     QVERIFY2(worst <= 100, qPrintable(all));
+}
+
+void TestJointDetector::theDipIsGivenWithAnIntervalThatHoldsIt_data() {
+    QTest::addColumn<double>("dip");
+    QTest::addColumn<double>("fallMs");
+    QTest::addColumn<double>("wobbleK");
+    // What the interval may be at most, to be of use: the span between the lowest reading and
+    // the deepest the readings allow (up to 12 K here), the whole degree and the wobble's reach.
+    QTest::addColumn<double>("widestK");
+    QTest::newRow("a deep, sharp bottom, a quiet tip") << 80.0 << 120.0 << 0.0 << 13.0;
+    QTest::newRow("a deep, sharp bottom, a wobbling tip") << 60.0 << 150.0 << 2.0 << 15.0;
+    QTest::newRow("a shallow, round bottom, a wobbling tip") << 15.0 << 350.0 << 1.0 << 6.0;
+}
+
+// The lowest point of a quarter-sine fall into a first-order return (the simulator's shapes, and
+// a heater's), read every 70 to 150 ms in whole degrees, at eight phases of the readings and the
+// wobble: the dip given must lie within its stated uncertainty of the truth every time, and the
+// interval stay narrow enough to judge by. A wobbling tip's lowest reading is the one the wobble
+// carried lowest, and a sharp bottom read 150 ms apart is passed between readings by several
+// kelvin: such bottoms are given up to 7.5 K too shallow, and were said to be within ±0.5 K.
+void TestJointDetector::theDipIsGivenWithAnIntervalThatHoldsIt() {
+    QFETCH(double, dip);
+    QFETCH(double, fallMs);
+    QFETCH(double, wobbleK);
+    QFETCH(double, widestK);
+    constexpr double kTauMs = 900;
+    const qint64 spacings[] = {150, 95, 70, 130, 110, 80, 140, 75};
+    QString all;
+    for (int phase = 0; phase < 8; ++phase) {
+        JointDetector d({}, 1);
+        const qint64 t0 = kT0 + 4000 + phase * 17;
+        const auto below = [&](qint64 t) {
+            const double ms = double(t - t0);
+            if (ms <= 0)
+                return 0.0;
+            return ms < fallMs ? dip * std::sin(M_PI / 2 * ms / fallMs)
+                               : dip * std::exp(-(ms - fallMs) / kTauMs);
+        };
+        std::optional<JointRecord> j;
+        size_t k = phase;
+        for (qint64 t = kT0; t < kT0 + 12'000 && !j; t += spacings[k++ % std::size(spacings)]) {
+            const double s = double(t - kT0) / 1000;
+            const double wobble = wobbleK * (0.6 * std::sin(s * 3.1 + phase) +
+                                             0.4 * std::sin(s * 23.7 + 2.0 * phase));
+            j = d.add(reading(t, kSetpoint - below(t) + wobble, below(t) > 1 ? 90 : 10));
+        }
+        QVERIFY(j);
+        const double error = j->dipDepth - dip;
+        all += QStringLiteral(" %1±%2").arg(error, 0, 'f', 1).arg(j->dipUncertaintyK, 0, 'f', 1);
+        QVERIFY2(std::abs(error) <= j->dipUncertaintyK, qPrintable(all));
+        QVERIFY2(j->dipUncertaintyK <= widestK, qPrintable(all));
+    }
 }
 
 void TestJointDetector::
