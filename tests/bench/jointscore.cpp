@@ -64,9 +64,14 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
     };
     QList<bool> used(all.size(), false);
     QList<double> recoveryErrors, startErrors, dipErrors, oracleDipErrors;
-    double signedSum = 0; // measured minus true: a bias shows here
+    QList<double> startUncertainties, dipUncertainties; // what the records say, to judge them by
+    double signedSum = 0;                               // measured minus true: a bias shows here
     int matched = 0, bounded = 0, holding = 0, seen = 0;
-    QList<model::JointRecord> unmade; // found, but matching no joint made
+    // How often the stated uncertainty of the start and the dip holds the truth: a figure on a
+    // customer's record is only as good as the interval it is given with.
+    int startsHeld = 0, dipsHeld = 0;
+    double startSignedSum = 0, dipSignedSum = 0; // measured minus true
+    QList<model::JointRecord> unmade;            // found, but matching no joint made
     // The recoveries measured furthest off, for whoever looks into the p95.
     struct Miss {
         double errorMs;
@@ -95,6 +100,12 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
         ++matched;
         startErrors.append(double(qAbs(j.startMs - t.startMs)));
         dipErrors.append(qAbs(j.dipDepth - t.depthK));
+        startsHeld += qAbs(j.startMs - t.startMs) <= j.startUncertaintyMs;
+        startSignedSum += double(j.startMs - t.startMs);
+        startUncertainties.append(double(j.startUncertaintyMs));
+        dipUncertainties.append(j.dipUncertaintyK);
+        dipSignedSum += j.dipDepth - t.depthK;
+        dipsHeld += qAbs(j.dipDepth - t.depthK) <= j.dipUncertaintyK;
         if (t.reads > 0)
             oracleDipErrors.append(qMax(0.0, t.depthK - t.readDepthK));
         // A bounded recovery is judged by whether its interval holds the truth; the errors are
@@ -180,7 +191,15 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
         {QStringLiteral("recovery_bounds_holding"),
          bounded == 0 ? 1.0 : double(holding) / double(bounded), QString(), 3},
         {QStringLiteral("start_error_p95_ms"), quantile(startErrors, 0.95), ms, 0},
+        {QStringLiteral("start_uncertainty_p50_ms"), quantile(startUncertainties, 0.5), ms, 0},
+        {QStringLiteral("start_bias_ms"), matched == 0 ? 0 : startSignedSum / matched, ms, 0},
+        {QStringLiteral("start_bounds_holding"), matched == 0 ? 1.0 : double(startsHeld) / matched,
+         QString(), 3},
         {QStringLiteral("dip_error_p95_k"), quantile(dipErrors, 0.95), k, 1},
+        {QStringLiteral("dip_uncertainty_p50_k"), quantile(dipUncertainties, 0.5), k, 1},
+        {QStringLiteral("dip_bias_k"), matched == 0 ? 0 : dipSignedSum / matched, k, 2},
+        {QStringLiteral("dip_bounds_holding"), matched == 0 ? 1.0 : double(dipsHeld) / matched,
+         QString(), 3},
         {QStringLiteral("dip_error_oracle_p95_k"), quantile(oracleDipErrors, 0.95), k, 1},
     };
 }
