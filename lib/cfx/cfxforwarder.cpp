@@ -8,7 +8,10 @@
 #include "model/workcontextjson.h"
 
 #include <QDateTime>
+#include <QJsonArray>
 #include <QLoggingCategory>
+#include <QSet>
+#include <algorithm>
 
 Q_LOGGING_CATEGORY(lcCfxForwarder, "tipscope.cfx.forwarder")
 
@@ -126,7 +129,7 @@ std::optional<Envelope> CfxForwarder::faultEnvelopeOf(const journal::StoredEvent
     Message message;
     const QString place = faultPlace(event);
     if (event.severity != Severity::Info) {
-        m_openFaults.insert(place, stored.uid);
+        raised(stored);
         message = faultOccurred(fault(event, stored.uid));
     } else {
         const QUuid occurrence = raisingOccurrence(stored);
@@ -250,7 +253,7 @@ bool CfxForwarder::boardReady(const journal::StoredEvent &change) {
 QUuid CfxForwarder::raisingOccurrence(const journal::StoredEvent &cleared) {
     const QString place = faultPlace(cleared.record);
     if (const auto it = m_openFaults.constFind(place); it != m_openFaults.cend())
-        return m_openFaults.take(place);
+        return m_openFaults.take(place).occurrence;
     journal::EventFilter filter;
     filter.deviceKey = cleared.record.device.key();
     filter.port = cleared.record.port;
@@ -300,7 +303,62 @@ void CfxForwarder::onLost() {
     m_inFlight.clear();
     m_unaccepted.clear();
     m_cursor = oldest;
-    m_openFaults.clear(); // read again with the events
+    // Read again from the journal: what was raised before the cursor and not cleared is still
+    // active, and the events after it are forwarded again.
+    m_openFaults.clear();
+    m_faultsRecalled = false;
+}
+
+void CfxForwarder::raised(const journal::StoredEvent &event) {
+    m_openFaults.insert(faultPlace(event.record), {event.uid, m_handleOf(event.record.device),
+                                                   fault(event.record, event.uid)});
+}
+
+// The faults raised and not cleared, from the journal's last fault events: at each place the
+// newest decides. Those after the cursor are forwarded again and keep the same occurrence.
+bool CfxForwarder::recallOpenFaults() {
+    if (m_faultsRecalled)
+        return true;
+    if (const auto opened = m_reader.keepOpen(m_journal.path()); !opened)
+        return false;
+    journal::EventFilter filter;
+    filter.kinds = {journal::JournalEvent::Kind::StationError,
+                    journal::JournalEvent::Kind::PortError,
+                    journal::JournalEvent::Kind::FeederError};
+    filter.limit = kRecallEvents;
+    filter.order = journal::Order::NewestFirst;
+    const auto events = m_reader.events(filter);
+    if (!events)
+        return false;
+    QSet<QString> decided;
+    for (const journal::StoredEvent &event : *events) {
+        const QString place = faultPlace(event.record);
+        if (decided.contains(place))
+            continue;
+        decided.insert(place);
+        if (event.record.severity != Severity::Info && !m_openFaults.contains(place))
+            raised(event);
+    }
+    m_faultsRecalled = true;
+    return true;
+}
+
+QJsonValue CfxForwarder::activeFaults(const QString &handle) {
+    if (!recallOpenFaults())
+        return QJsonValue(QJsonValue::Null);
+    QList<const OpenFault *> here;
+    for (const OpenFault &open : std::as_const(m_openFaults))
+        if (open.handle == handle)
+            here.append(&open);
+    // Oldest first, as they were raised: a hash has no order of its own.
+    std::sort(here.begin(), here.end(), [](const OpenFault *a, const OpenFault *b) {
+        return a->fault.value(QStringLiteral("OccurredAt")).toString() <
+               b->fault.value(QStringLiteral("OccurredAt")).toString();
+    });
+    QJsonArray faults;
+    for (const OpenFault *open : std::as_const(here))
+        faults.append(open->fault);
+    return faults;
 }
 
 void CfxForwarder::flushMarks() {

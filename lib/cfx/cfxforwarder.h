@@ -37,6 +37,8 @@
 #include "journal/journalreader.h"
 
 #include <QHash>
+#include <QJsonObject>
+#include <QJsonValue>
 #include <QObject>
 #include <QTimer>
 #include <functional>
@@ -72,6 +74,11 @@ public:
                  Boards boards = {}, QObject *parent = nullptr);
 
     [[nodiscard]] qint64 acceptedCount() const { return m_accepted; }
+    // The faults active at the endpoint `handle` (the SDK's Heartbeat.ActiveFaults): those raised
+    // and not cleared, as the journal has them; after a restart they are read from the journal
+    // again (its last kRecallEvents fault events). Null when the journal cannot be read.
+    [[nodiscard]] QJsonValue activeFaults(const QString &handle);
+    static constexpr int kRecallEvents = 2000;
     [[nodiscard]] int waitingCount() const { return int(m_inFlight.size()); }
     // Why the journal could not be read, empty when it could.
     [[nodiscard]] QString problem() const { return m_problem; }
@@ -91,6 +98,8 @@ private:
     [[nodiscard]] std::optional<QList<Envelope>>
     boardEnvelopesOf(const journal::StoredEvent &change);
     [[nodiscard]] QUuid raisingOccurrence(const journal::StoredEvent &cleared);
+    void raised(const journal::StoredEvent &event);
+    [[nodiscard]] bool recallOpenFaults();
     // False while a context change must wait for its board's joints (then pump() is called
     // again soon).
     [[nodiscard]] bool boardReady(const journal::StoredEvent &change);
@@ -118,7 +127,13 @@ private:
     qint64 m_cursor = 0;
     std::map<quint64, qint64> m_inFlight; // tag → event row
     QHash<qint64, int> m_unaccepted;      // event row → its messages the broker has not accepted
-    QHash<QString, QUuid> m_openFaults;   // faultPlace() → occurrence
+    struct OpenFault {
+        QUuid occurrence;
+        QString handle;
+        QJsonObject fault;
+    };
+    QHash<QString, OpenFault> m_openFaults; // faultPlace() → the fault raised there
+    bool m_faultsRecalled = false;
     QList<qint64> m_marks;
     QTimer m_pumpTimer;
     QTimer m_markTimer;

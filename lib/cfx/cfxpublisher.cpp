@@ -17,9 +17,8 @@ CfxPublisher::CfxPublisher(journal::Journal &journal, const CfxSettings &setting
     m_heartbeat.setInterval(settings.heartbeatS * 1000);
     connect(&m_heartbeat, &QTimer::timeout, this, [this] {
         const qint64 periodMs = m_settings.heartbeatS * 1000LL;
-        // Which faults are active is the forwarder's to say, through the spool: unknown here.
-        sendToEach([periodMs](const QString &handle) {
-            return heartbeat(handle, periodMs, QJsonValue(QJsonValue::Null));
+        sendToEach([this, periodMs](const QString &handle) {
+            return heartbeat(handle, periodMs, m_forwarder.activeFaults(handle));
         });
     });
     connect(&m_sender, &AmqpSender::connected, this, &CfxPublisher::stationsChanged);

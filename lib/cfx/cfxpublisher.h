@@ -3,9 +3,10 @@
 // (cfxforwarder.h: faults, store and forward) and adds what describes the present and so is not
 // spooled: EndpointConnected for every station once per broker connection (when the connection
 // opens, or when the station is found: stationsChanged()), a Heartbeat per station every
-// heartbeatS, StationStateChanged when a watched station's condition changes (watchStation(),
-// stationstate.h), and EndpointShuttingDown on stop(). A change while the broker is away is said
-// once it is back, from the state the broker last heard to the present one, its duration unknown.
+// heartbeatS with the faults active there (CfxForwarder::activeFaults), StationStateChanged when a
+// watched station's condition changes (watchStation(), stationstate.h), and EndpointShuttingDown on
+// stop(). A change while the broker is away is said once it is back, from the state the broker last
+// heard to the present one, its duration unknown.
 //
 // The endpoints are named by endpoints() (asked anew each time, so stations found later are
 // included); with a request address they also answer requests (cfxrequests.h) and the journal's

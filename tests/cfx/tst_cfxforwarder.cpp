@@ -14,6 +14,7 @@
 #include "model/workcontextjson.h"
 
 #include <QDateTime>
+#include <QJsonArray>
 #include <QSet>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -25,25 +26,13 @@ using namespace tipscope;
 using namespace tipscope::cfx;
 using journal::JournalEvent;
 using testing::CfxConsumer;
+using testing::portEvent;
 using testing::RabbitMqBroker;
 
 class TstCfxForwarder : public QObject {
     Q_OBJECT
 
     std::unique_ptr<RabbitMqBroker> m_broker;
-
-    static JournalEvent portEvent(JournalEvent::Kind kind, JournalEvent::Severity severity,
-                                  int port, qint64 timeMs) {
-        JournalEvent event;
-        event.kind = kind;
-        event.severity = severity;
-        event.device = testing::sampleDevice(0);
-        event.port = port;
-        event.timeMs = timeMs;
-        event.text = severity == JournalEvent::Severity::Info ? QStringLiteral("error cleared")
-                                                              : QStringLiteral("Short circuit");
-        return event;
-    }
 
     static QString handleOf(const model::DeviceIdentity &device) {
         // Each sample device is on a line of its own, at the same address.
@@ -120,6 +109,48 @@ private Q_SLOTS:
         // The status change has no CFX fault: marked at once, with the two accepted ones.
         QTRY_COMPARE_WITH_TIMEOUT(unsentCount(path), qint64(0), 20000);
         QCOMPARE(forwarder.acceptedCount(), qint64(2));
+        // Raised and cleared: the heartbeat says no fault is active, not that it cannot tell.
+        QCOMPARE(forwarder.activeFaults(handleOf(status.device)), QJsonValue(QJsonArray()));
+    }
+
+    // The heartbeat's ActiveFaults after a restart: what the journal raised and did not clear,
+    // each at its station's endpoint, with the occurrence its FaultOccurred carried. Read from
+    // the journal alone: no broker is needed to know it.
+    void theActiveFaultsAreWhatTheJournalRaisedAndDidNotClear() {
+        QTemporaryDir dir;
+        journal::Journal journal(dir.filePath(QStringLiteral("journal.sqlite")),
+                                 testing::quickOptions());
+        QVERIFY(testing::waitOpened(journal));
+        const QUuid open = journal.append(portEvent(
+            JournalEvent::Kind::PortError, JournalEvent::Severity::Error, 2, testing::kT0));
+        journal.append(portEvent(JournalEvent::Kind::PortError, JournalEvent::Severity::Error, 3,
+                                 testing::kT0 + 10));
+        journal.append(portEvent(JournalEvent::Kind::Status, JournalEvent::Severity::Info, 2,
+                                 testing::kT0 + 15));
+        journal.append(portEvent(JournalEvent::Kind::PortError, JournalEvent::Severity::Info, 3,
+                                 testing::kT0 + 20));
+        JournalEvent other = portEvent(JournalEvent::Kind::StationError,
+                                       JournalEvent::Severity::Warning, 0, testing::kT0 + 30);
+        other.port.reset();
+        other.device = testing::sampleDevice(1);
+        const QUuid otherOpen = journal.append(other);
+        QVERIFY(journal.flush());
+
+        AmqpSender sender; // never started: the faults come from the journal
+        CfxForwarder forwarder(journal, sender, handleOf, Codec::Gzip);
+        const QJsonValue here = forwarder.activeFaults(handleOf(testing::sampleDevice(0)));
+        QVERIFY(here.isArray());
+        QCOMPARE(here.toArray().size(), 1);
+        const QJsonObject fault = here.toArray().first().toObject();
+        QCOMPARE(fault.value(QStringLiteral("FaultOccurrenceId")).toString(),
+                 open.toString(QUuid::WithoutBraces));
+        QCOMPARE(fault.value(QStringLiteral("Severity")).toString(), QStringLiteral("Error"));
+        const QJsonArray there = forwarder.activeFaults(handleOf(other.device)).toArray();
+        QCOMPARE(there.size(), 1);
+        QCOMPARE(there.first().toObject().value(QStringLiteral("FaultOccurrenceId")).toString(),
+                 otherOpen.toString(QUuid::WithoutBraces));
+        QCOMPARE(forwarder.activeFaults(QStringLiteral("JBC.DME.nobody")),
+                 QJsonValue(QJsonArray()));
     }
 
     void anOutageLosesNothingAndSendsEachOnce() {

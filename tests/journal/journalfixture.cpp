@@ -48,6 +48,20 @@ journal::JournalEvent sampleEvent(int i, qint64 timeMs, int port) {
     return e;
 }
 
+journal::JournalEvent portEvent(journal::JournalEvent::Kind kind,
+                                journal::JournalEvent::Severity severity, int port, qint64 timeMs) {
+    journal::JournalEvent event;
+    event.kind = kind;
+    event.severity = severity;
+    event.device = sampleDevice(0);
+    event.port = port;
+    event.timeMs = timeMs;
+    event.text = severity == journal::JournalEvent::Severity::Info
+                     ? QStringLiteral("error cleared")
+                     : QStringLiteral("Short circuit");
+    return event;
+}
+
 namespace {
 journal::JournalEvent boardEvent(journal::JournalEvent::Kind kind, int deviceNo,
                                  std::optional<int> port, qint64 timeMs, const QString &text) {

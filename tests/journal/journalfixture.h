@@ -19,6 +19,11 @@ inline constexpr qint64 kT0 = 1'700'000'000'000; // 2023-11-14, a fixed instant
 [[nodiscard]] model::JointRecord sampleJoint(int i, qint64 startMs, int port = 1, int deviceNo = 0);
 // Event `i`: a write with details, on port `port` of device 0.
 [[nodiscard]] journal::JournalEvent sampleEvent(int i, qint64 timeMs, int port = 1);
+// An event of `kind` on port `port` of device 0: an error ("Short circuit") unless `severity` is
+// Info ("error cleared").
+[[nodiscard]] journal::JournalEvent portEvent(journal::JournalEvent::Kind kind,
+                                              journal::JournalEvent::Severity severity, int port,
+                                              qint64 timeMs);
 
 // A journal with one board on it, "SN-42", as a plant's would hold it:
 // - before it (board SN-41): a tool change on device 0 port 1, the tip's first joints
