@@ -12,8 +12,6 @@ namespace tipscope::bench {
 
 namespace {
 
-const QString kPython = QStringLiteral("/usr/bin/python3"); // Debian's, which has the binding
-
 qint64 stampOf(const QString &text) {
     const QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
     return time.isValid() ? time.toMSecsSinceEpoch() : 0;
@@ -40,53 +38,29 @@ QStringList jointIdsOf(const QJsonObject &body) {
 
 } // namespace
 
-CfxTap::~CfxTap() {
-    if (m_process.state() != QProcess::NotRunning) {
-        m_process.kill();
-        m_process.waitForFinished(5000);
-    }
-}
+CfxTap::CfxTap()
+    : m_consumer([this](const QByteArray &line) { take(line); }) {}
 
 QString CfxTap::skipReason() {
-    QProcess probe;
-    probe.start(kPython, {QStringLiteral("-c"), QStringLiteral("import proton")});
-    if (!probe.waitForFinished(20000) || probe.exitCode() != 0)
-        return QStringLiteral("python3-qpid-proton is not installed for /usr/bin/python3");
-    return {};
+    return testing::CfxConsumerProcess::skipReason();
 }
 
 bool CfxTap::start(const QString &url, const QString &source, QString *error) {
-    QObject::connect(&m_process, &QProcess::readyReadStandardOutput, &m_process,
-                     [this] { read(); });
-    m_process.setProcessChannelMode(QProcess::MergedChannels);
+    QProcess &process = m_consumer.process();
+    QObject::connect(&process, &QProcess::readyReadStandardOutput, &process, [this] { read(); });
     // As many messages as a run can make, and a deadline past any run: the bench ends it.
-    m_process.start(kPython, {QStringLiteral(CFX_CONSUMER), QStringLiteral("--url"), url,
-                              QStringLiteral("--source"), source, QStringLiteral("--count"),
-                              QStringLiteral("1000000000"), QStringLiteral("--timeout"),
-                              QStringLiteral("86400"), QStringLiteral("--retry-max-s"),
-                              QStringLiteral("0.5")});
-    if (!runUntil([this] { return m_ready || m_process.state() == QProcess::NotRunning; }, 30000) ||
-        !m_ready) {
+    m_consumer.start(url, source, 1'000'000'000, 86400,
+                     {QStringLiteral("--retry-max-s"), QStringLiteral("0.5")});
+    if (!runUntil([&] { return m_consumer.isReady() || process.state() == QProcess::NotRunning; },
+                  30000) ||
+        !m_consumer.isReady()) {
         *error = QStringLiteral("the CFX consumer did not attach to %1").arg(source);
         return false;
     }
     return true;
 }
 
-void CfxTap::read() {
-    m_pending += m_process.readAll();
-    qsizetype end;
-    while ((end = m_pending.indexOf('\n')) >= 0) {
-        take(m_pending.left(end).trimmed());
-        m_pending.remove(0, end + 1);
-    }
-}
-
 void CfxTap::take(const QByteArray &line) {
-    if (line == "READY") {
-        m_ready = true;
-        return;
-    }
     if (line.startsWith("BAD: transport")) {
         ++m_transportErrors; // the broker's outage, ridden out by connecting again
         return;

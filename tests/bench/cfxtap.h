@@ -1,14 +1,15 @@
-// The independent CFX consumer (tests/cfx/cfx_consumer.py, Debian's python3-qpid-proton) run by
-// `tipscope-bench cfx` on one source for as long as the bench lasts: each message it prints is
+// The independent CFX consumer (support/cfxconsumerprocess.h) run by `tipscope-bench cfx` on one
+// source for as long as the bench lasts: each message it prints is
 // kept as what the bench counts (name, endpoint, UniqueID, time stamp, arrival, transaction,
 // board, and the joints a UnitsProcessed carries). The consumer checks every message against
 // the CFX SDK's names as it does for the tests; its complaints are kept apart from the broker
 // outages it rides out (it connects again at most --retry-max-s apart).
 #pragma once
 
+#include "cfxconsumerprocess.h"
+
 #include <QHash>
 #include <QList>
-#include <QProcess>
 #include <QString>
 #include <QStringList>
 
@@ -27,8 +28,7 @@ struct TappedMessage {
 
 class CfxTap {
 public:
-    CfxTap() = default;
-    ~CfxTap();
+    CfxTap();
     CfxTap(const CfxTap &) = delete;
     CfxTap &operator=(const CfxTap &) = delete;
 
@@ -36,12 +36,12 @@ public:
     // Starts the consumer on `source` and returns once its link is attached.
     [[nodiscard]] bool start(const QString &url, const QString &source, QString *error);
     // Reads what the consumer printed so far (the bench's event loop also does, as it arrives).
-    void read();
+    void read() { m_consumer.read(); }
 
     [[nodiscard]] const QList<TappedMessage> &messages() const { return m_messages; }
     [[nodiscard]] const QStringList &complaints() const { return m_complaints; }
     [[nodiscard]] int transportErrors() const { return m_transportErrors; }
-    [[nodiscard]] qint64 pid() const { return m_process.processId(); }
+    [[nodiscard]] qint64 pid() { return m_consumer.process().processId(); }
     // The endpoints that said WorkStarted for `board`.
     [[nodiscard]] QStringList startedAt(const QString &board) const {
         return m_startedAt.value(board);
@@ -52,13 +52,11 @@ public:
 private:
     void take(const QByteArray &line);
 
-    QProcess m_process;
-    QByteArray m_pending;
-    bool m_ready = false;
     QList<TappedMessage> m_messages;
     QHash<QString, QStringList> m_startedAt;
     QStringList m_complaints;
     int m_transportErrors = 0;
+    testing::CfxConsumerProcess m_consumer;
 };
 
 } // namespace tipscope::bench
