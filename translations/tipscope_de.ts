@@ -1763,12 +1763,12 @@
         <translation>Eine gzip-komprimierte CFX-Nachricht ist beschädigt oder größer als %1 Bytes.</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/cfxrequests.cpp" line="121"/>
+        <location filename="../lib/cfx/cfxrequests.cpp" line="119"/>
         <source>A CFX request (%1) without a reply-to address: it cannot be answered.</source>
         <translation>Eine CFX-Anfrage (%1) ohne Antwortadresse (reply-to): sie kann nicht beantwortet werden.</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/cfxrequests.cpp" line="126"/>
+        <location filename="../lib/cfx/cfxrequests.cpp" line="124"/>
         <source>A CFX request (%1) for &quot;%2&quot;, which is no endpoint here.</source>
         <translation>Eine CFX-Anfrage (%1) an „%2“, das hier kein Endpunkt ist.</translation>
     </message>
@@ -2997,9 +2997,14 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
         <translation>&apos;%1&apos; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="84"/>
-        <source>%1 has more decimals than %2 can take</source>
-        <translation>%1 hat mehr Nachkommastellen, als %2 zulässt</translation>
+        <location filename="../lib/model/displayunits.cpp" line="86"/>
+        <source>&apos;%1&apos; is far outside what %2 can take</source>
+        <translation>&apos;%1&apos; liegt weit außerhalb dessen, was %2 zulässt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/displayunits.cpp" line="93"/>
+        <source>%1 lies between the values %2 can take: %3 or %4</source>
+        <translation>%1 liegt zwischen den Werten, die %2 annehmen kann: %3 oder %4</translation>
     </message>
 </context>
 <context>
@@ -3998,7 +4003,7 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="114"/>
-        <location filename="../lib/model/parameter.cpp" line="241"/>
+        <location filename="../lib/model/parameter.cpp" line="242"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
@@ -4013,42 +4018,42 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="204"/>
+        <location filename="../lib/model/parameter.cpp" line="205"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="205"/>
+        <location filename="../lib/model/parameter.cpp" line="206"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="263"/>
+        <location filename="../lib/model/parameter.cpp" line="264"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="266"/>
+        <location filename="../lib/model/parameter.cpp" line="267"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="289"/>
+        <location filename="../lib/model/parameter.cpp" line="290"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="304"/>
+        <location filename="../lib/model/parameter.cpp" line="305"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="317"/>
+        <location filename="../lib/model/parameter.cpp" line="318"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="335"/>
+        <location filename="../lib/model/parameter.cpp" line="336"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -8746,19 +8751,19 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="93"/>
-        <location filename="../lib/journal/journal.cpp" line="107"/>
-        <location filename="../lib/journal/journal.cpp" line="166"/>
+        <location filename="../lib/journal/journal.cpp" line="111"/>
+        <location filename="../lib/journal/journal.cpp" line="125"/>
+        <location filename="../lib/journal/journal.cpp" line="189"/>
         <source>The journal is closed.</source>
         <translation>Das Journal ist geschlossen.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="97"/>
+        <location filename="../lib/journal/journal.cpp" line="115"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>Das Journal kommt nicht nach: %1 Einträge warten darauf, geschrieben zu werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="145"/>
+        <location filename="../lib/journal/journal.cpp" line="168"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
     </message>
@@ -8922,37 +8927,37 @@ Möchten Sie fortfahren?</translation>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="214"/>
+        <location filename="../lib/link/requestqueue.cpp" line="222"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="252"/>
+        <location filename="../lib/link/requestqueue.cpp" line="256"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="261"/>
+        <location filename="../lib/link/requestqueue.cpp" line="265"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="265"/>
+        <location filename="../lib/link/requestqueue.cpp" line="269"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="283"/>
+        <location filename="../lib/link/requestqueue.cpp" line="287"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="304"/>
+        <location filename="../lib/link/requestqueue.cpp" line="319"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="322"/>
+        <location filename="../lib/link/requestqueue.cpp" line="335"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -8960,7 +8965,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <location filename="../lib/link/requestqueue.cpp" line="338"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
@@ -8968,17 +8973,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="328"/>
+        <location filename="../lib/link/requestqueue.cpp" line="341"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="399"/>
+        <location filename="../lib/link/requestqueue.cpp" line="413"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="401"/>
+        <location filename="../lib/link/requestqueue.cpp" line="415"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>

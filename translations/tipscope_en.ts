@@ -361,7 +361,7 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="322"/>
+        <location filename="../lib/link/requestqueue.cpp" line="335"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
@@ -369,7 +369,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <location filename="../lib/link/requestqueue.cpp" line="338"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>%n byte of garbage came instead</numerusform>

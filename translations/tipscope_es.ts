@@ -1763,12 +1763,12 @@
         <translation>Un mensaje CFX con gzip está dañado o supera los %1 bytes.</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/cfxrequests.cpp" line="121"/>
+        <location filename="../lib/cfx/cfxrequests.cpp" line="119"/>
         <source>A CFX request (%1) without a reply-to address: it cannot be answered.</source>
         <translation>Una petición CFX (%1) sin dirección de respuesta (reply-to): no se puede responder.</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/cfxrequests.cpp" line="126"/>
+        <location filename="../lib/cfx/cfxrequests.cpp" line="124"/>
         <source>A CFX request (%1) for &quot;%2&quot;, which is no endpoint here.</source>
         <translation>Una petición CFX (%1) para «%2», que aquí no es ningún punto final.</translation>
     </message>
@@ -2997,9 +2997,14 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
         <translation>&apos;%1&apos; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="84"/>
-        <source>%1 has more decimals than %2 can take</source>
-        <translation>%1 tiene más decimales de los que admite %2</translation>
+        <location filename="../lib/model/displayunits.cpp" line="86"/>
+        <source>&apos;%1&apos; is far outside what %2 can take</source>
+        <translation>&apos;%1&apos; está muy fuera de lo que admite %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/displayunits.cpp" line="93"/>
+        <source>%1 lies between the values %2 can take: %3 or %4</source>
+        <translation>%1 está entre los valores que admite %2: %3 o %4</translation>
     </message>
 </context>
 <context>
@@ -3998,7 +4003,7 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="114"/>
-        <location filename="../lib/model/parameter.cpp" line="241"/>
+        <location filename="../lib/model/parameter.cpp" line="242"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
@@ -4013,42 +4018,42 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="204"/>
+        <location filename="../lib/model/parameter.cpp" line="205"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="205"/>
+        <location filename="../lib/model/parameter.cpp" line="206"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="263"/>
+        <location filename="../lib/model/parameter.cpp" line="264"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="266"/>
+        <location filename="../lib/model/parameter.cpp" line="267"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="289"/>
+        <location filename="../lib/model/parameter.cpp" line="290"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="304"/>
+        <location filename="../lib/model/parameter.cpp" line="305"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="317"/>
+        <location filename="../lib/model/parameter.cpp" line="318"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="335"/>
+        <location filename="../lib/model/parameter.cpp" line="336"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -8746,19 +8751,19 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="93"/>
-        <location filename="../lib/journal/journal.cpp" line="107"/>
-        <location filename="../lib/journal/journal.cpp" line="166"/>
+        <location filename="../lib/journal/journal.cpp" line="111"/>
+        <location filename="../lib/journal/journal.cpp" line="125"/>
+        <location filename="../lib/journal/journal.cpp" line="189"/>
         <source>The journal is closed.</source>
         <translation>El diario está cerrado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="97"/>
+        <location filename="../lib/journal/journal.cpp" line="115"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>El diario no da abasto: %1 registros esperan a ser escritos.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="145"/>
+        <location filename="../lib/journal/journal.cpp" line="168"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
     </message>
@@ -8922,37 +8927,37 @@ Do you want to continue?</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="214"/>
+        <location filename="../lib/link/requestqueue.cpp" line="222"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="252"/>
+        <location filename="../lib/link/requestqueue.cpp" line="256"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="261"/>
+        <location filename="../lib/link/requestqueue.cpp" line="265"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="265"/>
+        <location filename="../lib/link/requestqueue.cpp" line="269"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="283"/>
+        <location filename="../lib/link/requestqueue.cpp" line="287"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="304"/>
+        <location filename="../lib/link/requestqueue.cpp" line="319"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="322"/>
+        <location filename="../lib/link/requestqueue.cpp" line="335"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -8960,7 +8965,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <location filename="../lib/link/requestqueue.cpp" line="338"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -8968,17 +8973,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="328"/>
+        <location filename="../lib/link/requestqueue.cpp" line="341"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="399"/>
+        <location filename="../lib/link/requestqueue.cpp" line="413"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="401"/>
+        <location filename="../lib/link/requestqueue.cpp" line="415"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
