@@ -5222,39 +5222,44 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::BoardReportDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="23"/>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="74"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="25"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="116"/>
         <source>Board report</source>
         <translation>Platinenbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="33"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="34"/>
         <source>Every joint the journal keeps for the board, its result, its tools&apos; wear and the events while it was made, as a PDF to sign.</source>
         <translation>Jede Lötstelle, die das Journal für die Platine behält, ihr Ergebnis, der Verschleiß ihrer Spitzen und die Ereignisse während der Fertigung, als PDF zum Unterschreiben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="39"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="40"/>
         <source>Board serial:</source>
         <translation>Platinen-Seriennummer:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="42"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="43"/>
         <source>Write PDF…</source>
         <translation>PDF schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="51"/>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="69"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="57"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="111"/>
         <source>Give the serial of a board.</source>
         <translation>Die Seriennummer einer Platine angeben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="60"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="78"/>
+        <source>Reading the journal for board %1…</source>
+        <translation>Das Journal wird für Platine %1 gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="90"/>
         <source>The journal has no board %1: no joint or event carries that serial.</source>
         <translation>Das Journal kennt keine Platine %1: keine Lötstelle und kein Ereignis trägt diese Seriennummer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="76"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="118"/>
         <source>PDF documents (*.pdf)</source>
         <translation>PDF-Dokumente (*.pdf)</translation>
     </message>

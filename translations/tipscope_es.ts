@@ -5222,39 +5222,44 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::BoardReportDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="23"/>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="74"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="25"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="116"/>
         <source>Board report</source>
         <translation>Informe de placa</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="33"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="34"/>
         <source>Every joint the journal keeps for the board, its result, its tools&apos; wear and the events while it was made, as a PDF to sign.</source>
         <translation>Cada soldadura que el diario guarda de la placa, su resultado, el desgaste de sus puntas y los eventos mientras se fabricaba, como PDF para firmar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="39"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="40"/>
         <source>Board serial:</source>
         <translation>Número de serie de la placa:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="42"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="43"/>
         <source>Write PDF…</source>
         <translation>Escribir PDF…</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="51"/>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="69"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="57"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="111"/>
         <source>Give the serial of a board.</source>
         <translation>Indique el número de serie de una placa.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="60"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="78"/>
+        <source>Reading the journal for board %1…</source>
+        <translation>Leyendo el diario para la placa %1…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="90"/>
         <source>The journal has no board %1: no joint or event carries that serial.</source>
         <translation>El diario no tiene la placa %1: ninguna soldadura ni evento lleva ese número de serie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="76"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="118"/>
         <source>PDF documents (*.pdf)</source>
         <translation>Documentos PDF (*.pdf)</translation>
     </message>

@@ -14,6 +14,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QThread>
+#include <memory>
 
 namespace tipscope::gui {
 
@@ -29,7 +31,6 @@ BoardReportDialog::BoardReportDialog(QString journalPath, const QString &serial,
     m_problem = new QLabel(this);
     m_problem->setObjectName(QStringLiteral("problem"));
     m_problem->setWordWrap(true);
-    m_problem->setStyleSheet(QStringLiteral("color: #c62828;"));
     auto *note = new QLabel(tr("Every joint the journal keeps for the board, its result, its "
                                "tools' wear and the events while it was made, as a PDF to sign."),
                             this);
@@ -39,36 +40,77 @@ BoardReportDialog::BoardReportDialog(QString journalPath, const QString &serial,
     form->addRow(tr("Board serial:"), m_serial);
     form->addRow(m_problem);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
-    buttons->addButton(tr("Write PDF…"), QDialogButtonBox::AcceptRole);
+    m_write = buttons->addButton(tr("Write PDF…"), QDialogButtonBox::AcceptRole);
     connect(buttons, &QDialogButtonBox::accepted, this, &BoardReportDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     form->addRow(buttons);
 }
 
-protocol::Outcome<void> BoardReportDialog::writeReport(const QString &path) const {
+BoardReportDialog::~BoardReportDialog() {
+    if (m_reader)
+        m_reader->wait(); // its result is dropped: nobody waits for it any more
+}
+
+void BoardReportDialog::writeReport(const QString &path) {
     const QString serial = m_serial->text().trimmed();
     if (serial.isEmpty())
-        return protocol::failure(tr("Give the serial of a board."));
-    journal::JournalReader reader;
-    if (const auto opened = reader.open(m_journalPath); !opened)
-        return opened;
-    const auto record = journal::buildBoardRecord(reader, serial);
+        return showProblem(tr("Give the serial of a board."));
+    if (m_reader)
+        return;
+    // What the thread builds, handed back on this one once it ended.
+    auto record =
+        std::make_shared<protocol::Outcome<journal::BoardRecord>>(protocol::failure(QString()));
+    m_reader = QThread::create([record, journalPath = m_journalPath, serial] {
+        journal::JournalReader reader;
+        if (const auto opened = reader.open(journalPath); !opened)
+            *record = protocol::failure(opened.error());
+        else
+            *record = journal::buildBoardRecord(reader, serial);
+    });
+    connect(m_reader, &QThread::finished, this, [this, record, serial, path] {
+        m_reader->deleteLater();
+        m_reader = nullptr;
+        finishReport(*record, serial, path);
+    });
+    m_write->setEnabled(false);
+    m_serial->setEnabled(false);
+    m_problem->setStyleSheet(QString());
+    m_problem->setText(tr("Reading the journal for board %1…").arg(serial));
+    m_reader->start();
+}
+
+void BoardReportDialog::finishReport(const protocol::Outcome<journal::BoardRecord> &record,
+                                     const QString &serial, const QString &path) {
+    m_write->setEnabled(true);
+    m_serial->setEnabled(true);
     if (!record)
-        return protocol::failure(record.error());
+        return showProblem(record.error());
     if (record->isEmpty())
-        return protocol::failure(
+        return showProblem(
             tr("The journal has no board %1: no joint or event carries that serial.").arg(serial));
     const report::BoardReportInfo info{QApplication::applicationVersion(), m_journalPath,
                                        QDateTime::currentMSecsSinceEpoch()};
-    return report::writeBoardPdf(record.value(), info, path);
+    if (const auto written = report::writeBoardPdf(record.value(), info, path); !written)
+        return showProblem(written.error());
+    m_problem->clear();
+    Q_EMIT reportDone(QString());
+    if (std::exchange(m_closeWhenWritten, false))
+        QDialog::accept();
+}
+
+void BoardReportDialog::showProblem(const QString &problem) {
+    m_closeWhenWritten = false;
+    m_problem->setStyleSheet(QStringLiteral("color: #c62828;"));
+    m_problem->setText(problem);
+    Q_EMIT reportDone(problem);
 }
 
 void BoardReportDialog::accept() {
     const QString serial = m_serial->text().trimmed();
-    if (serial.isEmpty()) {
-        m_problem->setText(tr("Give the serial of a board."));
+    if (serial.isEmpty())
+        return showProblem(tr("Give the serial of a board."));
+    if (m_reader)
         return;
-    }
     QString fileName = serial + QStringLiteral(".pdf");
     fileName.replace(QLatin1Char('/'), QLatin1Char('_')); // a serial is not a folder
     const QString path = QFileDialog::getSaveFileName(this, tr("Board report"),
@@ -76,11 +118,8 @@ void BoardReportDialog::accept() {
                                                       tr("PDF documents (*.pdf)"));
     if (path.isEmpty())
         return;
-    if (const auto written = writeReport(path); !written) {
-        m_problem->setText(written.error());
-        return;
-    }
-    QDialog::accept();
+    m_closeWhenWritten = true;
+    writeReport(path);
 }
 
 } // namespace tipscope::gui
