@@ -27,6 +27,7 @@ private Q_SLOTS:
     void aBoardTheJournalHoldsIsWrittenAsAPdf();
     void anUnknownOrMissingSerialIsSaidAndNothingWritten_data();
     void anUnknownOrMissingSerialIsSaidAndNothingWritten();
+    void aDialogClosedWhileReadingWritesNothing();
 
 private:
     QTemporaryDir m_dir;
@@ -96,6 +97,18 @@ void TestBoardReportDialog::anUnknownOrMissingSerialIsSaidAndNothingWritten() {
     QVERIFY2(said.contains(message), qPrintable(said));
     // Said where the eye is: in the dialog, which stays open with what was typed.
     QCOMPARE(dialog.findChild<QLabel *>(QStringLiteral("problem"))->text(), said);
+    QVERIFY(!QFile::exists(pdf));
+}
+
+// Closed while the journal is read: it waits for the scan, drops its result and writes nothing.
+void TestBoardReportDialog::aDialogClosedWhileReadingWritesNothing() {
+    const QString pdf = m_dir.filePath(QStringLiteral("closed.pdf"));
+    {
+        BoardReportDialog dialog(m_journal, QStringLiteral("SN-42"));
+        dialog.writeReport(pdf);
+        QVERIFY(dialog.isReading());
+    }
+    QCoreApplication::processEvents(); // what the scan's end posted, to a dialog now gone
     QVERIFY(!QFile::exists(pdf));
 }
 

@@ -47,8 +47,11 @@ BoardReportDialog::BoardReportDialog(QString journalPath, const QString &serial,
 }
 
 BoardReportDialog::~BoardReportDialog() {
-    if (m_reader)
-        m_reader->wait(); // its result is dropped: nobody waits for it any more
+    if (!m_reader)
+        return;
+    // Its result is dropped: nobody waits for it any more.
+    m_reader->wait();
+    delete m_reader.data();
 }
 
 void BoardReportDialog::writeReport(const QString &path) {
