@@ -291,14 +291,19 @@ private Q_SLOTS:
         journal::EventFilter port4;
         port4.kinds = {journal::JournalEvent::Kind::Status};
         port4.port = 4;
+        // Toggled at uneven intervals: at a steady 1.5 s, a status read every 3 s saw port 4
+        // in the same state every time (once, for 66 s under load).
         QElapsedTimer toggle;
         toggle.start();
         int mode = 1;
+        int toggles = 0;
+        const int intervalsMs[] = {1100, 1900, 1300, 2300};
         const auto port4Changed = [&] {
-            if (toggle.elapsed() > 1500) {
+            if (toggle.elapsed() > intervalsMs[size_t(toggles) % std::size(intervalsMs)]) {
                 mode = 3 - mode; // 1 (stand) and 2 (sleep) in turn
                 sim.command(QStringLiteral("status 4 %1").arg(mode));
                 toggle.restart();
+                ++toggles;
             }
             const auto events =
                 reader.keepOpen(agent.journalPath())
