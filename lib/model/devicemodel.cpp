@@ -222,14 +222,14 @@ void DeviceModel::logWrite(int port, const QString &what, const QJsonObject &det
 }
 
 void DeviceModel::logEvent(Event::Kind kind, Event::Severity severity, int port,
-                           const QString &text, const QJsonObject &details) {
+                           const QString &text, const QJsonObject &details, double ageMs) {
     if (!m_log)
         return;
     Event e({}, kind, severity, sourceName(port), text);
     e.device = identity();
     e.port = port;
     e.details = details;
-    m_log->append(std::move(e));
+    m_log->append(std::move(e), ageMs);
 }
 
 DeviceIdentity DeviceModel::identity() const {

@@ -112,9 +112,10 @@ public:
     // device's own), so that the history's Source column does.
     void logCommunication(const QString &what, const QString &reason);
     void logWrite(int port, const QString &what, const QJsonObject &details = {});
-    // An event of this device (`port` 0: the device itself), with its identity and source name.
+    // An event of this device (`port` 0: the device itself), with its identity and source name;
+    // `ageMs`: how old the reading that showed it was (EventLog::append).
     void logEvent(Event::Kind kind, Event::Severity severity, int port, const QString &text,
-                  const QJsonObject &details = {});
+                  const QJsonObject &details = {}, double ageMs = 0);
 
 Q_SIGNALS:
     void temperatureUnitChanged();

@@ -1,5 +1,7 @@
 #include "eventlog.h"
 
+#include <cmath>
+
 #include <QCoreApplication>
 
 namespace tipscope::model {
@@ -87,10 +89,16 @@ EventLog::EventLog(QObject *parent, int capacity)
     : QObject(parent)
     , m_capacity(qMax(1, capacity)) {}
 
-void EventLog::append(Event event) {
-    if (!event.time.isValid())
+void EventLog::append(Event event, double ageMs) {
+    if (!event.time.isValid()) {
         event.time =
             m_clock ? QDateTime::fromMSecsSinceEpoch(m_clock()) : QDateTime::currentDateTime();
+        if (ageMs > 0) {
+            event.time = event.time.addMSecs(-std::llround(ageMs));
+            if (!m_events.empty())
+                event.time = qMax(event.time, m_events.back().time);
+        }
+    }
     if (Event *earlier = repeatTarget(event)) {
         earlier->count += qMax(1, event.count);
         earlier->lastTime =

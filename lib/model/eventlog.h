@@ -85,7 +85,9 @@ public:
 
     explicit EventLog(QObject *parent = nullptr, int capacity = 10000);
 
-    void append(Event event);
+    // An event without a time is stamped now, or `ageMs` before now for a change a device showed
+    // in a reading that old (Parameter::reportedAgeMs): never before the newest entry.
+    void append(Event event, double ageMs = 0);
     void add(Event::Kind kind, Event::Severity severity, const QString &source,
              const QString &text);
     [[nodiscard]] QList<Event> events() const;

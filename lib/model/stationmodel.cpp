@@ -112,28 +112,32 @@ void StationModel::logChange(Parameter *p, int port) {
     if (before == *v && !first)
         return;
     const Role role = p->meta().role;
+    // Stamped at the instant the station showed it, as its tip's samples are.
+    const double age = p->reportedAgeMs();
     if (role == Role::ConnectedTool) {
         if (!first)
             logEvent(Event::Kind::ToolChange, Event::Severity::Info, port,
-                     StationModelTr::tr("%1 → %2").arg(toolName(int(before)), toolName(int(*v))));
+                     StationModelTr::tr("%1 → %2").arg(toolName(int(before)), toolName(int(*v))),
+                     {}, age);
     } else if (role == Role::Status) {
         if (!first)
             logEvent(Event::Kind::Status, Event::Severity::Info, port,
                      StationModelTr::tr("%1 → %2").arg(PortStatus::fromNumber(before).text(),
-                                                       PortStatus::fromNumber(*v).text()));
+                                                       PortStatus::fromNumber(*v).text()),
+                     {}, age);
     } else if (role == Role::Alarm) {
         if (*v != 0)
-            logEvent(Event::Kind::Alarm, Event::Severity::Warning, port, p->displayText());
+            logEvent(Event::Kind::Alarm, Event::Severity::Warning, port, p->displayText(), {}, age);
     } else {
         const bool isStation = port == 0;
         const QString table = isStation ? familyInfo().stationErrors : familyInfo().portErrors;
         const int code = isStation ? int(*v) : catalog().canonicalPortError(int(*v));
         if (code != 0)
             logEvent(isStation ? Event::Kind::StationError : Event::Kind::PortError,
-                     severityOf(catalog(), table, code), port, p->displayText());
+                     severityOf(catalog(), table, code), port, p->displayText(), {}, age);
         else if (!first)
             logEvent(isStation ? Event::Kind::StationError : Event::Kind::PortError,
-                     Event::Severity::Info, port, StationModelTr::tr("error cleared"));
+                     Event::Severity::Info, port, StationModelTr::tr("error cleared"), {}, age);
     }
 }
 

@@ -19,6 +19,7 @@ class TestEventLog : public QObject {
 private Q_SLOTS:
     void anEventIsStampedByTheGivenClock();
     void aTimeTheEventCarriesIsKept();
+    void aChangeIsStampedWhenTheReadingShowingItWasTaken();
     void withoutAClockTheWallClockStamps();
     void beyondTheCapacityTheOldestGoAndAreCounted();
     void aFloodOfOneEventIsOneEntryWithItsCountAndSpan();
@@ -67,6 +68,25 @@ void TestEventLog::aTimeTheEventCarriesIsKept() {
     log.append({when, Event::Kind::Alarm, Event::Severity::Warning, QStringLiteral("port 2"),
                 QStringLiteral("upper limit")});
     QCOMPARE(log.events().constFirst().time, when);
+}
+
+// A tool or an error changed when the station took the reading that shows it, not when its
+// answer was decoded (Parameter::reportedAgeMs); never before the newest entry, so the log keeps
+// its order.
+void TestEventLog::aChangeIsStampedWhenTheReadingShowingItWasTaken() {
+    EventLog log;
+    qint64 now = 1'000'000'000'000;
+    log.setClock([&now] { return now; });
+    log.append(Event({}, Event::Kind::ToolChange, Event::Severity::Info, QStringLiteral("port 1"),
+                     QStringLiteral("No tool → T245")),
+               12.4);
+    now += 5;
+    log.append(Event({}, Event::Kind::PortError, Event::Severity::Info, QStringLiteral("port 1"),
+                     QStringLiteral("error cleared")),
+               30);
+    const QList<Event> events = log.events();
+    QCOMPARE(events.at(0).time.toMSecsSinceEpoch(), 1'000'000'000'000 - 12);
+    QCOMPARE(events.at(1).time.toMSecsSinceEpoch(), 1'000'000'000'000 - 12);
 }
 
 void TestEventLog::withoutAClockTheWallClockStamps() {
