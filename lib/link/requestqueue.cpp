@@ -272,8 +272,9 @@ void RequestQueue::onTimer() {
 void RequestQueue::complete(const Frame &answer, int answerBytes) {
     m_timer.stop();
     Entry &e = *m_current;
-    const qint64 latency = nowUs() - e.lastSentUs;
-    e.answerAgeUs = answerAgeUs(e, answerBytes);
+    const qint64 now = nowUs();
+    const qint64 latency = now - e.lastSentUs;
+    e.answerAgeUs = answerAgeUs(e, answerBytes, now);
     m_stats.recordAnswer(latency, nowMs());
     if (answer.header == Header::Nak) {
         const int code = parseNumber(answer.data).value_or(-1);
@@ -297,8 +298,7 @@ void RequestQueue::complete(const Frame &answer, int answerBytes) {
 // its answer's first byte left: the middle of that window, as far as the wire's own time tells
 // it. A value stamped when its answer was decoded is older than its stamp by the answer's bytes
 // on the wire (8 ms for a tip reading at 19200 baud) and any wait for the event loop since.
-qint64 RequestQueue::answerAgeUs(const Entry &e, int answerBytes) const {
-    const qint64 now = nowUs();
+qint64 RequestQueue::answerAgeUs(const Entry &e, int answerBytes, qint64 now) const {
     const qint64 reached = e.lastSentUs + qint64(wireMs(e.requestBytes) * 1000);
     const qint64 answered = qMax(reached, now - qint64(wireMs(answerBytes) * 1000));
     return qBound<qint64>(0, now - (reached + answered) / 2, now - e.lastSentUs);

@@ -161,7 +161,7 @@ private:
     void onFrame(const protocol::DecodeEvent &event);
     void onStray(const protocol::DecodeEvent &event);
     void complete(const protocol::Frame &answer, int answerBytes);
-    [[nodiscard]] qint64 answerAgeUs(const Entry &e, int answerBytes) const;
+    [[nodiscard]] qint64 answerAgeUs(const Entry &e, int answerBytes, qint64 now) const;
     void attemptFailed(ReplyError error, const QString &why);
     void finishCurrent(ReplyError error, const QString &why, const protocol::Frame &answer = {});
     void failEverything(ReplyError error, const QString &why);

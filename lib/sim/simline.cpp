@@ -97,12 +97,7 @@ void SimLine::setClockRunning(bool running) {
 }
 
 void SimLine::tick() {
-    const qint64 now = m_clock.nsecsElapsed();
-    const int ms = int((now - m_lastTickNs) / kNsPerMs);
-    if (ms <= 0)
-        return;
-    m_lastTickNs += ms * kNsPerMs;
-    advance(ms);
+    catchUpTo(m_clock.nsecsElapsed());
 }
 
 // A device answers with what it is at the instant the request reached it: the joints' truth is
@@ -139,8 +134,7 @@ std::optional<SimJoint> SimLine::startJoint(int port, int depthK, qint64 recover
     SimStation *st = station();
     if (!st || port < 1 || port > st->portCount())
         return std::nullopt;
-    if (m_tickTimer.isActive())
-        tick(); // the joint starts now, not at the last tick
+    catchUpTo(m_clock.nsecsElapsed()); // the joint starts now, not at the last tick
     const auto made = st->startJoint(port, depthK, recoveryMs);
     reportJoints();
     if (!made)
