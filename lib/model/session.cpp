@@ -93,10 +93,8 @@ void Session::connectTo(const Settings &settings) {
     }
     if (settings.line.kind == LineSettings::Kind::Demo) {
         m_demo = sim::SimLine::demo();
-        if (settings.demoPaced) {
-            m_demo->setBaud(19200); // the demo behaves like a real station on a real wire
-            m_demo->setChunkMs(8);  // reached through a USB adapter with a short latency timer
-        }
+        if (settings.demoPaced)
+            m_demo->paceLikeARealWire();
         m_demo->setTickMs(100); // the tip's physics, as often as the chart's fastest poll
         m_demo->setDemoActivity(settings.demoActivity);
         m_demo->setClockRunning(true);

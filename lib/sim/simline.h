@@ -88,6 +88,12 @@ public:
     // last byte is in, whichever is first (0, the default: as each byte arrives). A USB-serial
     // adapter works this way (its latency timer), and it spares the receiver a wake-up a byte.
     void setChunkMs(int ms) { m_chunkNs = qMax(0, ms) * 1'000'000LL; }
+    // What the paced demo is: a real station on a 19200-baud wire, reached through a USB adapter
+    // with a short latency timer (8 ms).
+    void paceLikeARealWire() {
+        setBaud(19200);
+        setChunkMs(8);
+    }
     void setClockRunning(bool running);
     // How often the running clock moves the devices' simulated time (default 20 ms). The
     // physics steps by the time elapsed, so a coarser tick only makes changes show in steps
