@@ -4,6 +4,7 @@
 // measurements fold away and keep their scroll position, and the first minutes fill the view.
 #include "charts/chartspage.h"
 #include "charts/chartwidget.h"
+#include "charts/readoutpanel.h"
 #include "i18n/translations.h"
 #include "mainwindow.h"
 #include "testmain.h"
@@ -165,9 +166,14 @@ void TestChartsLayout::hoveringNeverMovesThePlots() {
                      first->plotSurface()->mapToGlobal(plot.center()), Qt::NoButton, Qt::NoButton,
                      Qt::NoModifier);
     QApplication::sendEvent(first->plotSurface(), &move);
-    // Every port's values, more than a line holds at this width: cut short, never wrapped.
+    // Every port's values, more than a line holds at this width: each port's cell whole, in
+    // rows whose room was kept before the pointer came.
     QVERIFY2(page->readoutText().count(QStringLiteral(" · ")) >= 8,
              qPrintable(page->readoutText()));
+    auto *readout = page->findChild<ReadoutPanel *>(QStringLiteral("chartReadout"));
+    QVERIFY(readout);
+    QVERIFY2(readout->columns() < 4, "four ports side by side do not fit in 1280 px");
+    QCOMPARE(readout->height(), readout->heightForWidth(readout->width()));
     QCoreApplication::processEvents();
     QList<QRect> after;
     for (ChartWidget *pane : page->panes())

@@ -16,5 +16,7 @@ target_sources(tipscope_gui PRIVATE
     ${CMAKE_CURRENT_LIST_DIR}/chartspageexport.cpp
     ${CMAKE_CURRENT_LIST_DIR}/chartspageoverlays.cpp
     ${CMAKE_CURRENT_LIST_DIR}/chartspagereplay.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/readoutpanel.h
+    ${CMAKE_CURRENT_LIST_DIR}/readoutpanel.cpp
 )
 target_link_libraries(tipscope_gui PUBLIC Qt6::Charts tipscope_analysis tipscope_recording)

@@ -162,6 +162,7 @@ void ChartsPage::rebuildPanes() {
         connectPane(pane.widget);
         m_panesLayout->addWidget(pane.widget, first.isFeeder() ? kFeederStretch : kStationStretch);
     }
+    updateReadoutTemplate();
     scheduleRedraw();
 }
 

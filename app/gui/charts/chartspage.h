@@ -47,6 +47,7 @@ namespace tipscope::gui {
 
 class ChartWidget;
 class ElidedLabel;
+class ReadoutPanel;
 struct ChartBand;
 struct ChartMarker;
 struct ChartSeriesStyle;
@@ -124,6 +125,7 @@ private:
 
     void buildToolbar(QVBoxLayout *layout);
     void buildReadout(QVBoxLayout *layout);
+    void updateReadoutTemplate();
     void buildMeasurements(QVBoxLayout *layout);
     void showMeasurements(bool shown);
     void showWindowLength();
@@ -182,7 +184,7 @@ private:
     QToolButton *m_record = nullptr;
     QToolButton *m_live = nullptr;
     ElidedLabel *m_source = nullptr;
-    ElidedLabel *m_readout[2] = {nullptr, nullptr};
+    ReadoutPanel *m_readout = nullptr;
     QToolButton *m_measureToggle = nullptr;
     bool m_measureChosen = false; // folded or unfolded by hand: the page no longer decides
     QDoubleSpinBox *m_tolerance = nullptr;

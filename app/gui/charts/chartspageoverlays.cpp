@@ -5,7 +5,7 @@
 #include "chartwidget.h"
 #include "model/analysis/measurementreport.h"
 #include "model/chart/chartframe.h"
-#include "widgets/elidedlabel.h"
+#include "readoutpanel.h"
 
 #include <QDateTime>
 #include <QDoubleSpinBox>
@@ -23,7 +23,6 @@ namespace tipscope::gui {
 using namespace tipscope::model;
 
 namespace {
-const QString kReadoutJoin = QStringLiteral(" · ");
 QColor eventColor(const ChartEvent &e) {
     switch (e.kind) {
     case Event::Kind::Status:
@@ -99,23 +98,25 @@ QList<ChartBand> ChartsPage::bandsFor(const Pane &pane) const {
     return out;
 }
 
-// The readout has a fixed place of two lines under the panes, so hovering never moves the
-// plots: the station's values on the first, the feeder's on the second, each cut short with
-// "…" when it does not fit (the whole text is the line's tooltip).
+// The readout has a place of its own under the panes, as high as its width needs for every
+// cell, so hovering never moves the plots (readoutpanel.h).
 void ChartsPage::buildReadout(QVBoxLayout *layout) {
-    auto *box = new QWidget(this);
-    box->setObjectName(QStringLiteral("chartReadout"));
-    box->setAccessibleName(tr("Values under the cursor"));
-    auto *lines = new QVBoxLayout(box);
-    lines->setContentsMargins(0, 0, 0, 0);
-    lines->setSpacing(0);
-    for (ElidedLabel *&line : m_readout) {
-        line = new ElidedLabel(box);
-        line->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        lines->addWidget(line);
+    m_readout = new ReadoutPanel(this);
+    m_readout->setObjectName(QStringLiteral("chartReadout"));
+    m_readout->setAccessibleName(tr("Values under the cursor"));
+    layout->addWidget(m_readout);
+}
+
+// What the readout must make room for: every pane's cells with each value at its widest.
+void ChartsPage::updateReadoutTemplate() {
+    QStringList cells;
+    for (const Pane &pane : std::as_const(m_panes)) {
+        QList<ReadoutValue> widest;
+        for (int i = 0; i < pane.traces.size(); ++i)
+            widest.append({i, true, 0, 0, -888.8});
+        cells.append(readoutCells(pane.traces, widest));
     }
-    box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-    layout->addWidget(box);
+    m_readout->setTemplate(cells);
 }
 
 // The measurements sit under a header that folds them away; until someone folds or unfolds
@@ -179,26 +180,24 @@ void ChartsPage::onHover(qint64 timeMs) {
     QStringList station, feeder;
     for (const Pane &pane : std::as_const(m_panes)) {
         pane.widget->setCrosshair(timeMs);
-        const QString values = readoutValuesText(
+        const QStringList cells = readoutCells(
             pane.traces, readoutAt(shownTelemetry(), shownChannels(), pane.traces, timeMs));
-        (shownChannels().at(pane.channels.first()).isFeeder() ? feeder : station).append(values);
+        (shownChannels().at(pane.channels.first()).isFeeder() ? feeder : station).append(cells);
     }
-    const QString time = readoutTimeText(timeMs) + QStringLiteral("   ");
-    m_readout[0]->setFullText(station.isEmpty() ? QString() : time + station.join(kReadoutJoin));
-    m_readout[1]->setFullText(feeder.isEmpty() ? QString() : time + feeder.join(kReadoutJoin));
+    m_readout->showValues(readoutTimeText(timeMs), station + feeder);
 }
 
 void ChartsPage::onLeave() {
     m_hover.reset();
     for (const Pane &pane : std::as_const(m_panes))
         pane.widget->setCrosshair(std::nullopt);
-    m_readout[0]->setFullText(tr("Point at a chart to read every series at that instant."));
-    m_readout[1]->setFullText(
-        tr("Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset."));
+    m_readout->showHint(
+        {tr("Point at a chart to read every series at that instant."),
+         tr("Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.")});
 }
 
 QString ChartsPage::readoutText() const {
-    return m_readout[0]->fullText() + QLatin1Char('\n') + m_readout[1]->fullText();
+    return m_readout->text();
 }
 
 QString ChartsPage::measurementText() const {

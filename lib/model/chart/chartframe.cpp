@@ -145,14 +145,24 @@ QList<ReadoutValue> readoutAt(const Telemetry &telemetry, const QList<ChartChann
     return out;
 }
 
-QString readoutValuesText(const QList<ChartTrace> &traces, const QList<ReadoutValue> &values) {
-    QStringList parts;
+QStringList readoutCells(const QList<ChartTrace> &traces, const QList<ReadoutValue> &values) {
+    QStringList cells;
+    int channel = -1;
     for (const ReadoutValue &v : values) {
         const ChartTrace &t = traces.at(v.trace);
-        parts.append(t.name + QLatin1Char(' ') +
-                     (v.valid ? t.format.format(v.display) : QStringLiteral("—")));
+        const QString part = t.name + QLatin1Char(' ') +
+                             (v.valid ? t.format.format(v.display) : QStringLiteral("—"));
+        if (cells.isEmpty() || t.channel != channel)
+            cells.append(part);
+        else
+            cells.last() += kReadoutJoin + part;
+        channel = t.channel;
     }
-    return parts.join(QStringLiteral(" · "));
+    return cells;
+}
+
+QString readoutValuesText(const QList<ChartTrace> &traces, const QList<ReadoutValue> &values) {
+    return readoutCells(traces, values).join(kReadoutJoin);
 }
 
 QString readoutTimeText(qint64 timeMs) {

@@ -64,6 +64,11 @@ struct ReadoutValue {
 // no sample.
 [[nodiscard]] QString readoutValuesText(const QList<ChartTrace> &traces,
                                         const QList<ReadoutValue> &values);
+// The same, one text per channel (a port's tip, setpoint and power together), in trace order:
+// the cells a readout lays out side by side or one under the other as its width allows.
+[[nodiscard]] QStringList readoutCells(const QList<ChartTrace> &traces,
+                                       const QList<ReadoutValue> &values);
+inline const QString kReadoutJoin = QStringLiteral(" · ");
 [[nodiscard]] QString readoutTimeText(qint64 timeMs);
 
 // A round axis range around `span` (steps of 1, 2, 5 × 10^n) with a little headroom, so a
