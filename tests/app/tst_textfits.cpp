@@ -1,34 +1,26 @@
-// Every text a person reads fits where it is shown: the real main window at 1280×720, on the
-// demo line, in English, German and Spanish; on every page, each visible label, button, check
-// box, tab, combo box and device tree entry is checked against the room it has. A text cut
+// What a person sees fits where it is shown: the real main window at 1280×720, on the demo line,
+// in English, German and Spanish; on every page, each visible label, button, check box, tab,
+// combo box and device tree entry is checked against the room it has, no two widgets of a layout
+// cover each other and no page needs a horizontal scroll bar (support/screencheck.h). A text cut
 // short ("Port 1 (T2", "Tempera…") fails the test with its page, widget and words.
-// ElidedLabel is the one exception: it is made to cut long status text with "…" and carries the
-// whole text as its tooltip.
 #include "devicetree.h"
 #include "i18n/translations.h"
 #include "mainwindow.h"
 #include "pages/feederpage.h"
 #include "pages/settingspage.h"
 #include "testmain.h"
-#include "widgets/elidedlabel.h"
 #include "widgets/parametereditor.h"
 
+#include "support/screencheck.h"
 #include "support/typing.h"
 
-#include <QAbstractButton>
-#include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QGroupBox>
 #include <QLabel>
-#include <QLineEdit>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
-#include <QStyleOptionComboBox>
-#include <QTabBar>
 #include <QTabWidget>
 #include <QTest>
-#include <QToolButton>
 #include <QTranslator>
 
 namespace tst_textfits {
@@ -40,122 +32,6 @@ using namespace tipscope::model;
 namespace {
 constexpr int kConnectMs = 20000;
 
-// Plain text as drawn: no mnemonic ampersand, no rich-text tags.
-QString shownText(QString text) {
-    text.remove(QRegularExpression(QStringLiteral("<[^>]*>")));
-    return text.replace(QStringLiteral("&&"), QStringLiteral("\x01"))
-        .remove(QLatin1Char('&'))
-        .replace(QLatin1Char('\x01'), QLatin1Char('&'));
-}
-
-QString who(const QWidget *w) {
-    return QStringLiteral("%1 %2").arg(QString::fromLatin1(w->metaObject()->className()),
-                                       w->objectName());
-}
-
-// Why `w`'s text does not fit, or empty when it does (or `w` is not a text widget).
-QString clipped(QWidget *w) {
-    if (qobject_cast<ElidedLabel *>(w))
-        return {};
-    if (auto *label = qobject_cast<QLabel *>(w)) {
-        const QString text = shownText(label->text());
-        if (text.isEmpty() || label->textFormat() == Qt::RichText)
-            return {};
-        const QRect room = label->contentsRect();
-        if (label->wordWrap()) {
-            const int needed = label->heightForWidth(label->width());
-            return needed > label->height() + 1
-                       ? QStringLiteral("\"%1\" needs %2 px of height, has %3")
-                             .arg(text)
-                             .arg(needed)
-                             .arg(label->height())
-                       : QString();
-        }
-        int width = 0;
-        for (const QString &line : text.split(QLatin1Char('\n')))
-            width = qMax(width, label->fontMetrics().horizontalAdvance(line));
-        return width > room.width() + 1 ? QStringLiteral("\"%1\" needs %2 px, has %3")
-                                              .arg(text)
-                                              .arg(width)
-                                              .arg(room.width())
-                                        : QString();
-    }
-    if (auto *button = qobject_cast<QAbstractButton *>(w)) {
-        if (button->text().isEmpty())
-            return {};
-        const QSize hint = button->minimumSizeHint().expandedTo(button->sizeHint());
-        return button->width() + 1 < hint.width() ? QStringLiteral("\"%1\" needs %2 px, has %3")
-                                                        .arg(shownText(button->text()))
-                                                        .arg(hint.width())
-                                                        .arg(button->width())
-                                                  : QString();
-    }
-    if (auto *edit = qobject_cast<QLineEdit *>(w)) {
-        // The example in an empty field says what to type: cut, it says nothing. Its room ends
-        // where the field's own buttons (clear, or a combo box's arrow outside it) begin.
-        if (!edit->text().isEmpty() || edit->placeholderText().isEmpty())
-            return {};
-        QStyleOptionFrame option;
-        option.initFrom(edit);
-        option.rect = edit->rect();
-        option.lineWidth =
-            edit->hasFrame()
-                ? edit->style()->pixelMetric(QStyle::PM_DefaultFrameWidth, &option, edit)
-                : 0;
-        QRect room = edit->style()
-                         ->subElementRect(QStyle::SE_LineEditContents, &option, edit)
-                         .marginsRemoved(edit->textMargins());
-        for (const QToolButton *b : edit->findChildren<QToolButton *>())
-            if (b->isVisibleTo(edit))
-                room.setRight(qMin(room.right(), b->x() - 1));
-        const int width = edit->fontMetrics().horizontalAdvance(edit->placeholderText());
-        return width > room.width() - 4 ? QStringLiteral("placeholder \"%1\" needs %2 px, has %3")
-                                              .arg(edit->placeholderText())
-                                              .arg(width)
-                                              .arg(room.width() - 4)
-                                        : QString();
-    }
-    if (auto *combo = qobject_cast<QComboBox *>(w)) {
-        if (combo->currentText().isEmpty())
-            return {};
-        QStyleOptionComboBox option;
-        option.initFrom(combo);
-        option.editable = combo->isEditable();
-        const QRect field = combo->style()->subControlRect(QStyle::CC_ComboBox, &option,
-                                                           QStyle::SC_ComboBoxEditField, combo);
-        const int width = combo->fontMetrics().horizontalAdvance(combo->currentText());
-        return width > field.width() + 1 ? QStringLiteral("\"%1\" needs %2 px, has %3")
-                                               .arg(combo->currentText())
-                                               .arg(width)
-                                               .arg(field.width())
-                                         : QString();
-    }
-    if (auto *tabs = qobject_cast<QTabBar *>(w)) {
-        QStringList cut;
-        for (int i = 0; i < tabs->count(); ++i)
-            if (tabs->isTabVisible(i) &&
-                tabs->tabRect(i).width() + 1 <
-                    tabs->fontMetrics().horizontalAdvance(shownText(tabs->tabText(i))) +
-                        tabs->style()->pixelMetric(QStyle::PM_TabBarTabHSpace, nullptr, tabs))
-                cut.append(shownText(tabs->tabText(i)));
-        return cut.isEmpty() ? QString() : QStringLiteral("tabs cut short: ") + cut.join(", ");
-    }
-    if (auto *tree = qobject_cast<QTreeWidget *>(w)) {
-        QStringList cut;
-        for (QTreeWidgetItemIterator it(tree); *it; ++it) {
-            const QModelIndex index = tree->indexFromItem(*it);
-            const QRect shown = tree->visualRect(index);
-            if (shown.isEmpty())
-                continue;
-            const int needed = tree->sizeHintForIndex(index).width();
-            if (shown.right() > tree->viewport()->width() ||
-                shown.width() + 1 < needed - tree->indentation())
-                cut.append((*it)->text(0));
-        }
-        return cut.isEmpty() ? QString() : QStringLiteral("entries cut short: ") + cut.join(", ");
-    }
-    return {};
-}
 // The window at the smallest screen size it is made for, on the demo line.
 void showOnTheDemoLine(MainWindow &window) {
     window.resize(1280, 720);
@@ -250,13 +126,8 @@ void TestTextFits::everyTextOnEveryPageFitsAt1280x720() {
                                                "has 1280")
                                     .arg(pages.tabText(i))
                                     .arg(needed));
-            for (QWidget *w : window.findChildren<QWidget *>()) {
-                if (!w->isVisible() || w->visibleRegion().isEmpty())
-                    continue;
-                if (const QString why = clipped(w); !why.isEmpty())
-                    problems.append(
-                        QStringLiteral("%1: %2: %3").arg(pages.tabText(i), who(w), why));
-            }
+            for (const QString &why : testing::screenProblems(window))
+                problems.append(QStringLiteral("%1: %2").arg(pages.tabText(i), why));
         }
     }
     qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
