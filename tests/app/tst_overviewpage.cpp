@@ -55,6 +55,7 @@ private Q_SLOTS:
     void theCardsShareTheHeightAndTheirSparklinesDrawTheLastMinute();
     void fourPortsFitWithoutScrollingAt1280x720();
     void thePowerIsWrittenBesideItsBarNotOnTheFill();
+    void aBusyPortIsShownAtMostFiveTimesASecondAndKeptCurrent();
     void aSetpointOutOfRangeIsRefusedNotClamped();
     void theTransformerTemperatureFollowsTheTemperatureUnit();
     void eachCardShowsItsPortsLastJointAndStillFits();
@@ -331,6 +332,40 @@ void TestOverviewPage::aSetpointOutOfRangeIsRefusedNotClamped() {
              qPrintable(card->feedbackText()));
     QTest::qWait(200);
     QCOMPARE(m_session->demoLine()->stats().writeRequests, writes);
+}
+
+// The unpaced demo changes a port's values far more often than a person reads them; each change
+// repainted every label of the card and the setpoint box (18 % of a core for the Overview under
+// X). The power text, which changes at almost every reading, is painted at most
+// PortCard::kMaxRefreshesPerSecond times a second, and still follows the port.
+void TestOverviewPage::aBusyPortIsShownAtMostFiveTimesASecondAndKeptCurrent() {
+    connectDemo();
+    PortCard *card = m_page->card(1);
+    auto *text = card->findChild<QLabel *>(QStringLiteral("powerText"));
+    QVERIFY(text);
+    struct Count : QObject {
+        int texts = 0;
+        QString last;
+        QLabel *label = nullptr;
+        bool eventFilter(QObject *, QEvent *e) override {
+            if (e->type() == QEvent::Paint && label->text() != last) {
+                last = label->text();
+                ++texts;
+            }
+            return false;
+        }
+    } count;
+    count.label = text;
+    count.last = text->text();
+    text->installEventFilter(&count);
+    const int answeredBefore = m_session->line()->queue().stats().answered;
+    QTest::qWait(3000);
+    text->removeEventFilter(&count);
+    // The line answered hundreds of readings meanwhile, tens of them this port's power.
+    QVERIFY(m_session->line()->queue().stats().answered - answeredBefore > 100);
+    QVERIFY2(count.texts >= 2, qPrintable(QString::number(count.texts)));
+    QVERIFY2(count.texts <= 3 * PortCard::kMaxRefreshesPerSecond + 1,
+             qPrintable(QString::number(count.texts)));
 }
 
 // On the bar the words ran into the fill and were hard to read on its colour.

@@ -159,7 +159,9 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
         requestSetpoint(m_newSetpoint->value());
     });
     m_refresh = new DeferredRefresh(*this, [this] { refresh(); });
-    connect(&port, &PortModel::changed, m_refresh, &DeferredRefresh::request);
+    m_pace.setSingleShot(true);
+    connect(&m_pace, &QTimer::timeout, m_refresh, &DeferredRefresh::request);
+    connect(&port, &PortModel::changed, this, &PortCard::onPortChanged);
     connect(&port.station(), &DeviceModel::temperatureUnitChanged, m_refresh,
             &DeferredRefresh::request);
     connect(&port.station(), &DeviceModel::lineUpChanged, m_refresh, &DeferredRefresh::request);
@@ -186,20 +188,39 @@ bool PortCard::controlsEnabled() const {
     return m_work->isEnabled() && m_set->isEnabled();
 }
 
-QString PortCard::tipText() {
+void PortCard::onPortChanged() {
+    if (m_pace.isActive())
+        return;
+    constexpr qint64 kPaceMs = 1000 / kMaxRefreshesPerSecond;
+    const qint64 since = m_lastRefresh.isValid() ? m_lastRefresh.elapsed() : kPaceMs;
+    if (since >= kPaceMs)
+        m_refresh->request();
+    else
+        m_pace.start(int(kPaceMs - since));
+}
+
+void PortCard::settle() {
+    if (m_pace.isActive()) {
+        m_pace.stop();
+        m_refresh->request();
+    }
     m_refresh->flush();
+}
+
+QString PortCard::tipText() {
+    settle();
     return m_tip->text();
 }
 QString PortCard::statusText() {
-    m_refresh->flush();
+    settle();
     return m_status->text();
 }
 QString PortCard::problemText() {
-    m_refresh->flush();
+    settle();
     return m_problem->text();
 }
 QString PortCard::staleText() {
-    m_refresh->flush();
+    settle();
     return m_stale->isHidden() ? QString() : m_stale->text();
 }
 void PortCard::showJoint(const JointRecord &joint) {
@@ -218,20 +239,22 @@ QString PortCard::jointText() const {
     return m_joint->isHidden() ? QString() : m_joint->accessibleName();
 }
 
-QString PortCard::powerText() const {
+QString PortCard::powerText() {
+    settle();
     return m_powerText->text();
 }
 QString PortCard::feedbackText() const {
     return m_feedback->text();
 }
 Level PortCard::look() {
-    m_refresh->flush();
+    settle();
     return m_shownLook;
 }
 
 void PortCard::refresh() {
     if (!m_port)
         return;
+    m_lastRefresh.start();
     PortModel &port = *m_port;
     m_title->setText(tr("Port %1 — %2").arg(port.number()).arg(port.toolName()));
     m_tip->setText(port.tipTemperature() ? port.displayText(Role::TipTemperature) : tr("— °"));
@@ -315,14 +338,23 @@ void PortCard::refreshSetpointEditor() {
         return;
     const TemperatureUnit unit = port.station().temperatureUnit();
     const DisplayFormat f = displayFormat(st->spec(), unit);
+    // Each of these repaints the box, also when nothing changed: only what changed is set.
+    const EditorFrame frame{QLatin1Char(' ') + f.unit, st->meta().step * f.scale,
+                            toDisplay(st->spec(), st->minimum(), unit),
+                            toDisplay(st->spec(), st->maximum(), unit)};
     m_newSetpoint->blockSignals(true);
-    m_newSetpoint->setSuffix(QLatin1Char(' ') + f.unit);
-    m_newSetpoint->setDecimals(0);
-    m_newSetpoint->setSingleStep(st->meta().step * f.scale);
-    m_newSetpoint->setAllowedRange(toDisplay(st->spec(), st->minimum(), unit),
-                                   toDisplay(st->spec(), st->maximum(), unit));
-    if (!m_newSetpoint->hasFocus() && st->number())
-        m_newSetpoint->setValue(toDisplay(st->spec(), *st->number(), unit));
+    if (!frame.sameAs(m_editorFrame)) {
+        m_editorFrame = frame;
+        m_newSetpoint->setSuffix(frame.suffix);
+        m_newSetpoint->setDecimals(0);
+        m_newSetpoint->setSingleStep(frame.step);
+        m_newSetpoint->setAllowedRange(frame.minimum, frame.maximum);
+    }
+    if (!m_newSetpoint->hasFocus() && st->number()) {
+        const double shown = toDisplay(st->spec(), *st->number(), unit);
+        if (m_newSetpoint->value() != shown)
+            m_newSetpoint->setValue(shown);
+    }
     m_newSetpoint->blockSignals(false);
 }
 

@@ -9,12 +9,19 @@
 // A port in error says so in its status line, in red, and the whole card turns red (an alarm:
 // amber), so it cannot be read as working. While the line is down the card is greyed and says
 // when its values were last read, and the controls are off (the page says why).
+//
+// A busy line changes a port's values some fifteen times a second; the card shows them at most
+// kMaxRefreshesPerSecond times a second (at once when it has not for that long), which a person
+// cannot tell from every change and costs a repaint of every label a fraction as often. The line
+// going down or up and another unit show at once.
 #pragma once
 
 #include "model/problemlevel.h"
 
+#include <QElapsedTimer>
 #include <QFrame>
 #include <QPointer>
+#include <QTimer>
 
 class QLabel;
 class QProgressBar;
@@ -35,6 +42,8 @@ class ValueSpinBox;
 class PortCard : public QFrame {
     Q_OBJECT
 public:
+    static constexpr int kMaxRefreshesPerSecond = 5;
+
     PortCard(model::PortModel &port, model::Telemetry &telemetry, const QString &telemetryKey,
              QWidget *parent = nullptr);
 
@@ -47,7 +56,7 @@ public:
     [[nodiscard]] QString staleText(); // "last read 14:02:11" while the line is down
     [[nodiscard]] QString feedbackText() const;
     // The power as written beside its bar ("power 40.7 %").
-    [[nodiscard]] QString powerText() const;
+    [[nodiscard]] QString powerText();
     [[nodiscard]] model::PortModel *port() const { return m_port; }
     // The port's last joint beside the title ("last joint 1.4 s, ok").
     void showJoint(const model::JointRecord &joint);
@@ -61,6 +70,9 @@ public:
 
 private:
     static void showLine(QLabel *label, const QString &text);
+    void onPortChanged();
+    // Shows what is due now, paced or deferred, before what the card shows is read.
+    void settle();
     void refresh();
     void refreshProblem();
     void refreshSetpointEditor();
@@ -69,6 +81,19 @@ private:
 
     QPointer<model::PortModel> m_port;
     DeferredRefresh *m_refresh = nullptr;
+    QTimer m_pace;
+    QElapsedTimer m_lastRefresh;
+    // What the setpoint editor was last set to, so that an unchanged range or unit costs nothing.
+    struct EditorFrame {
+        QString suffix;
+        double step = 0;
+        double minimum = 0;
+        double maximum = 0;
+        [[nodiscard]] bool sameAs(const EditorFrame &o) const {
+            return suffix == o.suffix && step == o.step && minimum == o.minimum &&
+                   maximum == o.maximum;
+        }
+    } m_editorFrame;
     QLabel *m_title;
     QLabel *m_joint;
     QLabel *m_tip;
