@@ -5,6 +5,8 @@
 #include "model/chart/chartframe.h"
 #include "testmain.h"
 
+#include <QGraphicsTextItem>
+#include <QGraphicsView>
 #include <QScreen>
 #include <QTest>
 #include <cmath>
@@ -54,6 +56,7 @@ private Q_SLOTS:
     void aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale();
     void aShortPaneLabelsFewerValuesSoTheyDoNotCrowd();
     void aPanePerPortLabelsEveryValueItShowsInFull();
+    void theValuesAreWrittenAsTheWindowsLanguageWritesThem();
     void anAlarmLabelNeverCoversACurve();
 
 private:
@@ -171,6 +174,28 @@ void TestChartWidget::aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale() {
         for (int x = 0; x < onScreen.width(); ++x)
             differing += onScreen.pixel(x, y) != repainted.pixel(x, y) ? 1 : 0;
     QCOMPARE(differing, 0);
+}
+
+// German writes 10,2 where English writes 10.2: the value axes as the rest of the window.
+void TestChartWidget::theValuesAreWrittenAsTheWindowsLanguageWritesThem() {
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    auto *german = new ChartWidget;
+    german->setSeries({{QStringLiteral("speed"), kPower, Qt::DotLine, ChartAxis::Left}});
+    german->resize(1200, 600);
+    german->show();
+    QVERIFY(QTest::qWaitForWindowExposed(german));
+    german->showData(ChartData{kT0, kT0 + 60'000, 9.5, 10.5, 0, 1, {}});
+    QCoreApplication::processEvents();
+    QStringList texts;
+    for (QGraphicsView *view : german->findChildren<QGraphicsView *>())
+        for (QGraphicsItem *item : view->scene()->items())
+            if (auto *text = dynamic_cast<QGraphicsTextItem *>(item); text && text->isVisible())
+                texts.append(text->toPlainText());
+    delete german;
+    QLocale::setDefault(before);
+    QVERIFY2(texts.contains(QStringLiteral("10,2")) && !texts.contains(QStringLiteral("10.2")),
+             qPrintable(texts.join(QStringLiteral(" | "))));
 }
 
 void TestChartWidget::aShortPaneLabelsFewerValuesSoTheyDoNotCrowd() {

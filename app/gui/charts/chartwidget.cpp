@@ -3,6 +3,7 @@
 #include "chartwidget_p.h"
 
 #include <QDateTime>
+#include <QLocale>
 #include <QPainter>
 #include <QVBoxLayout>
 #include <cmath>
@@ -47,7 +48,8 @@ int labelsWithin(double min, double max, double step) {
 void styleValueAxis(QValueAxis *axis) {
     axis->setTickType(QValueAxis::TicksDynamic);
     axis->setTickAnchor(0);
-    axis->setLabelFormat(QStringLiteral("%g"));
+    // With a precision: Qt Charts localizes only a format that gives one ("%g" came out empty).
+    axis->setLabelFormat(QStringLiteral("%.6g"));
     axis->setMinorTickCount(0);
 }
 } // namespace
@@ -67,6 +69,10 @@ ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
     // The light theme's background is a white-to-white gradient: a plain white fill looks the
     // same and is the cheapest thing to repaint under the curves on every frame.
     chart->setBackgroundBrush(QColor(Qt::white));
+    // The value axes' numbers as the rest of the window writes them (QLocale(): "10,5" in
+    // German); Qt Charts writes them in C's "10.5" otherwise.
+    chart->setLocalizeNumbers(true);
+    chart->setLocale(QLocale());
     applyMargins();
     chart->legend()->setAlignment(Qt::AlignTop);
     // The time axis only holds the plot's bottom edge: its range never changes, and the ticks,
