@@ -3,6 +3,7 @@
 #include "dialogs/boardreportdialog.h"
 #include "journalfixture.h"
 #include "mainwindow.h"
+#include "screencheck.h"
 #include "testmain.h"
 
 #include <QLabel>
@@ -89,6 +90,8 @@ void TestBoardReportDialog::anUnknownOrMissingSerialIsSaidAndNothingWritten() {
     QFETCH(QString, serial);
     QFETCH(QString, message);
     BoardReportDialog dialog(m_journal, serial);
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
     const QString pdf = m_dir.filePath(QStringLiteral("unknown.pdf"));
     QSignalSpy done(&dialog, &BoardReportDialog::reportDone);
     dialog.writeReport(pdf);
@@ -98,6 +101,10 @@ void TestBoardReportDialog::anUnknownOrMissingSerialIsSaidAndNothingWritten() {
     // Said where the eye is: in the dialog, which stays open with what was typed.
     QCOMPARE(dialog.findChild<QLabel *>(QStringLiteral("problem"))->text(), said);
     QVERIFY(!QFile::exists(pdf));
+    // The dialog grows to show it whole, and what it said before.
+    QTest::qWait(100);
+    const QStringList cut = screenProblems(dialog);
+    QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QLatin1Char('\n'))));
 }
 
 // Closed while the journal is read: it waits for the scan, drops its result and writes nothing.

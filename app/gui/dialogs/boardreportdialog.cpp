@@ -12,6 +12,7 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLayout>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QThread>
@@ -79,6 +80,7 @@ void BoardReportDialog::writeReport(const QString &path) {
     m_serial->setEnabled(false);
     m_problem->setStyleSheet(QString());
     m_problem->setText(tr("Reading the journal for board %1…").arg(serial));
+    fitHeight();
     m_reader->start();
 }
 
@@ -101,10 +103,19 @@ void BoardReportDialog::finishReport(const protocol::Outcome<journal::BoardRecor
         QDialog::accept();
 }
 
+// A layout squeezes its wrapped labels into the window it has rather than grow the window: a
+// message of two lines cut the text above it. The dialog grows to show both whole.
+void BoardReportDialog::fitHeight() {
+    layout()->activate();
+    if (const int needed = layout()->totalHeightForWidth(width()); needed > height())
+        resize(width(), needed);
+}
+
 void BoardReportDialog::showProblem(const QString &problem) {
     m_closeWhenWritten = false;
     m_problem->setStyleSheet(QStringLiteral("color: #c62828;"));
     m_problem->setText(problem);
+    fitHeight();
     Q_EMIT reportDone(problem);
 }
 

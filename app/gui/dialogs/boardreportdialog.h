@@ -42,6 +42,7 @@ private:
     void finishReport(const protocol::Outcome<journal::BoardRecord> &record, const QString &serial,
                       const QString &path);
     void showProblem(const QString &problem);
+    void fitHeight();
 
     QString m_journalPath;
     QLineEdit *m_serial;
