@@ -7,9 +7,11 @@
 #include <QLabel>
 #include <QLayout>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QStyleOptionButton>
 #include <QStyleOptionComboBox>
 #include <QTabBar>
 #include <QToolButton>
@@ -61,12 +63,29 @@ QString clippedText(QWidget *w) {
     if (auto *button = qobject_cast<QAbstractButton *>(w)) {
         if (button->text().isEmpty())
             return {};
-        const QSize hint = button->minimumSizeHint().expandedTo(button->sizeHint());
-        return button->width() + 1 < hint.width() ? QStringLiteral("\"%1\" needs %2 px, has %3")
-                                                        .arg(shownText(button->text()))
-                                                        .arg(hint.width())
-                                                        .arg(button->width())
-                                                  : QString();
+        // Qt's styles give a push button with text at least 80 px, whatever the text: a short
+        // word on a narrower button is still whole. A push button's text is cut where it is
+        // wider than the room the style draws it in.
+        if (auto *push = qobject_cast<QPushButton *>(button);
+            push && push->icon().isNull() && !push->menu()) {
+            QStyleOptionButton option;
+            option.initFrom(push);
+            option.text = push->text();
+            const int room =
+                push->style()->subElementRect(QStyle::SE_PushButtonContents, &option, push).width();
+            const int width = push->fontMetrics().horizontalAdvance(shownText(push->text()));
+            return width > room + 1 ? QStringLiteral("\"%1\" needs %2 px, has %3")
+                                          .arg(shownText(push->text()))
+                                          .arg(width)
+                                          .arg(room)
+                                    : QString();
+        }
+        const int needed = button->minimumSizeHint().expandedTo(button->sizeHint()).width();
+        return button->width() + 1 < needed ? QStringLiteral("\"%1\" needs %2 px, has %3")
+                                                  .arg(shownText(button->text()))
+                                                  .arg(needed)
+                                                  .arg(button->width())
+                                            : QString();
     }
     if (auto *edit = qobject_cast<QLineEdit *>(w)) {
         // The example in an empty field says what to type: cut, it says nothing. Its room ends
