@@ -71,7 +71,9 @@ void FrameBuilder::buildLayout() {
     named(m_command, "commandCombo", tr("Command"));
     m_command->setEditable(true);
     m_command->setInsertPolicy(QComboBox::NoInsert);
-    m_command->setMinimumContentsLength(30);
+    // Room for a code and most of its name; the list shows them whole. At 30 the Console was the
+    // one page wider than the others in Spanish, which narrowed the device tree while it showed.
+    m_command->setMinimumContentsLength(24);
     m_command->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     // Searching by name ("temp") matters more than prefix completion of 3-letter codes.
     m_command->completer()->setCompletionMode(QCompleter::PopupCompletion);

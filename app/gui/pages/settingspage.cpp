@@ -2,6 +2,7 @@
 
 #include "dialogs/profiledialog.h"
 #include "widgets/deferredrefresh.h"
+#include "widgets/flowlayout.h"
 #include "widgets/parametereditor.h"
 
 #include "model/profile.h"
@@ -29,7 +30,9 @@ using protocol::Role;
 
 SettingsPage::SettingsPage(Session &session, QWidget *parent)
     : Page(session, parent) {
-    auto *top = new QHBoxLayout;
+    auto *bar = new QWidget(this);
+    auto *top = new FlowLayout(bar);
+    top->setContentsMargins(0, 0, 0, 0);
     m_portBox = new QComboBox(this);
     m_portBox->setAccessibleName(tr("Port"));
     // The items come after the first show: sized once, the box cut "Port 1 (T245/T470 …)" short.
@@ -52,9 +55,15 @@ SettingsPage::SettingsPage(Session &session, QWidget *parent)
     profileMenu->addAction(tr("Open a profile (compare, dry run, apply)…"), this,
                            &SettingsPage::openProfile);
     m_profiles->setMenu(profileMenu);
-    top->addWidget(new QLabel(tr("Port:"), this));
-    top->addWidget(m_portBox);
-    top->addStretch(1);
+    // The port box and the buttons wrap onto a second line where the page is narrow: in one
+    // row, the Spanish labels made the page 12 px wider than the others, which took that width
+    // from the device tree each time the page was shown.
+    auto *portPair = new QWidget(this);
+    auto *portLayout = new QHBoxLayout(portPair);
+    portLayout->setContentsMargins(0, 0, 0, 0);
+    portLayout->addWidget(new QLabel(tr("Port:"), portPair));
+    portLayout->addWidget(m_portBox);
+    top->addWidget(portPair);
     for (QWidget *w : {static_cast<QWidget *>(m_refresh), static_cast<QWidget *>(m_revert),
                        static_cast<QWidget *>(m_apply), static_cast<QWidget *>(m_save),
                        static_cast<QWidget *>(m_actions), static_cast<QWidget *>(m_profiles)})
@@ -66,7 +75,7 @@ SettingsPage::SettingsPage(Session &session, QWidget *parent)
     m_scroll = new QScrollArea(this);
     m_scroll->setWidgetResizable(true);
     auto *layout = new QVBoxLayout(this);
-    layout->addLayout(top);
+    layout->addWidget(bar);
     layout->addWidget(m_notice);
     layout->addWidget(m_scroll, 1);
     connect(m_portBox, &QComboBox::activated, this, [this] {
