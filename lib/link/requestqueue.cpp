@@ -275,7 +275,7 @@ void RequestQueue::complete(const Frame &answer, int answerBytes) {
     const qint64 now = nowUs();
     const qint64 latency = now - e.lastSentUs;
     e.answerAgeUs = answerAgeUs(e, answerBytes, now);
-    m_stats.recordAnswer(latency, nowMs());
+    m_stats.recordAnswer(latency, now / 1000);
     if (answer.header == Header::Nak) {
         const int code = parseNumber(answer.data).value_or(-1);
         m_stats.naks[code] += 1;

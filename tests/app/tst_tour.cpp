@@ -44,7 +44,6 @@
 #include <QFileDialog>
 #include <QInputDialog>
 #include <QLineEdit>
-#include <QListView>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -335,6 +334,15 @@ void whenShown(QObject &step, std::function<void(T *)> act, QStringList *missed,
     poll->start();
 }
 
+// The button of `T` in `in` whose text, as shown, starts with `text` (as shown); null if none.
+template <typename T> T *buttonLabelled(QWidget &in, const QString &text) {
+    const QString wanted = testing::shownText(text);
+    for (T *b : in.findChildren<T *>())
+        if (testing::shownText(b->text()).startsWith(wanted))
+            return b;
+    return nullptr;
+}
+
 void click(QWidget *w) {
     QTest::mouseClick(w, Qt::LeftButton, {}, w->rect().center());
 }
@@ -389,7 +397,7 @@ void typePath(QFileDialog *dialog, const QString &path) {
     QTest::keyClick(name, Qt::Key_Return);
 }
 
-QStringList seenProblems(MainWindow &window, const QString &where) {
+QStringList seenProblems(QWidget &window, const QString &where) {
     QStringList out;
     for (const QString &p : testing::screenProblems(window))
         out.append(where + QStringLiteral(": ") + p);
@@ -472,10 +480,7 @@ void TestTour::theFirstMinute() {
     auto *kind = w.connectionBar().findChild<QComboBox *>();
     QVERIFY(kind);
     choose(kind, ConnectionBar::tr("Demo (simulated DME + SFR)"));
-    QPushButton *connect = nullptr;
-    for (QPushButton *b : w.connectionBar().findChildren<QPushButton *>())
-        if (b->text() == ConnectionBar::tr("&Connect"))
-            connect = b;
+    auto *connect = buttonLabelled<QPushButton>(w.connectionBar(), ConnectionBar::tr("&Connect"));
     QVERIFY(connect);
     click(connect);
     TOUR_COMPARE(w.session().state(), Session::State::Connected, kConnectMs);
@@ -514,10 +519,7 @@ void TestTour::aSettingTypedRefusedAndApplied() {
     auto *box = editor->findChild<QDoubleSpinBox *>();
     QVERIFY(box);
     settings->findChild<QScrollArea *>()->ensureWidgetVisible(editor);
-    QPushButton *apply = nullptr;
-    for (QPushButton *b : settings->findChildren<QPushButton *>())
-        if (b->text() == SettingsPage::tr("&Apply"))
-            apply = b;
+    auto *apply = buttonLabelled<QPushButton>(*settings, SettingsPage::tr("&Apply"));
     QVERIFY(apply);
 
     click(box);
@@ -546,10 +548,7 @@ void TestTour::aProfileSavedComparedAndApplied() {
     m_wire->setStep(QStringLiteral("a profile"));
     auto *settings = qobject_cast<SettingsPage *>(w.page(QStringLiteral("Settings")));
     QVERIFY(settings && w.session().station() && w.session().demoLine());
-    QToolButton *profiles = nullptr;
-    for (QToolButton *b : settings->findChildren<QToolButton *>())
-        if (b->text() == SettingsPage::tr("Profiles"))
-            profiles = b;
+    auto *profiles = buttonLabelled<QToolButton>(*settings, SettingsPage::tr("Profiles"));
     QVERIFY(profiles);
     const QString path = m_files.filePath(QStringLiteral("line-3.json"));
     QObject step;
@@ -580,10 +579,7 @@ void TestTour::aProfileSavedComparedAndApplied() {
     QVERIFY(inProfile > 430);
     w.session().demoLine()->station()->setSetting("MAT", 430);
     ParameterEditor *editor = settingsEditor("MAT");
-    QPushButton *refresh = nullptr;
-    for (QPushButton *b : settings->findChildren<QPushButton *>())
-        if (b->text() == SettingsPage::tr("Re&fresh"))
-            refresh = b;
+    auto *refresh = buttonLabelled<QPushButton>(*settings, SettingsPage::tr("Re&fresh"));
     QVERIFY(refresh && editor);
     click(refresh);
     TOUR_COMPARE(mat->value().value_or(protocol::Value{}).number, 430, 10000);
@@ -598,14 +594,8 @@ void TestTour::aProfileSavedComparedAndApplied() {
     whenShown<ProfileDialog>(
         step,
         [&](ProfileDialog *d) {
-            auto button = [d](const QString &text) -> QPushButton * {
-                for (QPushButton *b : d->findChildren<QPushButton *>())
-                    if (b->text().remove(QLatin1Char('&')).startsWith(text))
-                        return b;
-                return nullptr;
-            };
-            QPushButton *compare = button(ProfileDialog::tr("Compare"));
-            QPushButton *apply = button(ProfileDialog::tr("Apply"));
+            auto *compare = buttonLabelled<QPushButton>(*d, ProfileDialog::tr("Compare"));
+            auto *apply = buttonLabelled<QPushButton>(*d, ProfileDialog::tr("Apply"));
             if (!compare || !apply) {
                 d->reject();
                 return;
@@ -616,16 +606,14 @@ void TestTour::aProfileSavedComparedAndApplied() {
                                   10000))
                 compared = d->cellText(0, 0) + QLatin1Char('|') + d->summaryText();
             noteWhatIsSeen(QStringLiteral("Settings, behind the profile dialog"));
-            for (const QString &p : testing::screenProblems(*d))
-                m_seen.append(QStringLiteral("Profile dialog: ") + p);
+            m_seen.append(seenProblems(*d, QStringLiteral("Profile dialog")));
             m_wire->setStep(QStringLiteral("a profile applied"));
             click(apply);
             if (testing::runUntil([d] { return !d->isRunning() && !d->reportText().isEmpty(); },
                                   20000))
                 applied = d->reportText();
             testing::runFor(150);
-            for (const QString &p : testing::screenProblems(*d))
-                m_seen.append(QStringLiteral("Profile dialog, applied: ") + p);
+            m_seen.append(seenProblems(*d, QStringLiteral("Profile dialog, applied")));
             QTest::keyClick(d, Qt::Key_Escape);
         },
         &m_missed, QStringLiteral("the profile dialog"));

@@ -4,7 +4,6 @@
 
 #include <QEvent>
 #include <QPainter>
-#include <QStyle>
 
 namespace tipscope::gui {
 
@@ -20,6 +19,7 @@ ReadoutPanel::ReadoutPanel(QWidget *parent)
 }
 
 void ReadoutPanel::setTemplate(const QStringList &cells) {
+    m_template = cells;
     m_cellWidth = 0;
     m_cellCount = int(cells.size());
     learnWidths(cells);
@@ -92,10 +92,9 @@ QSize ReadoutPanel::minimumSizeHint() const {
 
 void ReadoutPanel::changeEvent(QEvent *event) {
     QWidget::changeEvent(event);
-    if (event->type() == QEvent::FontChange) {
-        learnWidths({});
-        updateGeometry();
-    }
+    // Widths measured in the old font: measured again in the new one.
+    if (event->type() == QEvent::FontChange)
+        setTemplate(m_template);
 }
 
 void ReadoutPanel::paintEvent(QPaintEvent *) {

@@ -46,6 +46,7 @@ private:
     QString m_time;
     QStringList m_cells;
     QStringList m_hint;
+    QStringList m_template;
     bool m_hovering = false;
     int m_cellWidth = 0;
     int m_cellCount = 0;
