@@ -1,8 +1,10 @@
 #include "benchsupport.h"
 
+#include <QCoreApplication>
 #include <QEventLoop>
 #include <QFile>
 #include <QList>
+#include <QProcess>
 #include <QSysInfo>
 #include <QTextStream>
 #include <QThread>
@@ -200,6 +202,31 @@ double quantile(QList<double> values, double p) {
 
 double pacedWireLimitTxPerS(qint64 answered, qint64 bytes) {
     return answered > 0 && bytes > 0 ? kWireBytesPerSecond * double(answered) / double(bytes) : 0;
+}
+
+} // namespace tipscope::bench
+
+namespace tipscope::bench {
+
+BusyLoad::BusyLoad(int count) {
+    for (int i = 0; i < count; ++i) {
+        // exec'd by a shell that dies with its parent (PDEATHSIG via setpriv is not everywhere):
+        // the loop checks its parent and ends when the bench is gone.
+        qint64 pid = 0;
+        if (QProcess::startDetached(
+                QStringLiteral("/bin/sh"),
+                {QStringLiteral("-c"), QStringLiteral("p=%1; while kill -0 $p 2>/dev/null; do "
+                                                      "i=0; while [ $i -lt 100000 ]; do "
+                                                      "i=$((i+1)); done; done")
+                                           .arg(QCoreApplication::applicationPid())},
+                QString(), &pid))
+            m_pids.push_back(pid);
+    }
+}
+
+BusyLoad::~BusyLoad() {
+    for (qint64 pid : m_pids)
+        ::kill(pid_t(pid), SIGKILL);
 }
 
 } // namespace tipscope::bench

@@ -10,6 +10,7 @@
 #include <QStringList>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace tipscope::bench {
 
@@ -51,6 +52,21 @@ void waitMs(int ms);
 // that starts processes can still stop them all on its way out.
 void stopOnSignals();
 [[nodiscard]] bool interrupted();
+
+// `count` busy loops (`sh -c 'while :; do :; done'`) beside a benchmark, so that its figures,
+// the floor's and ours alike, can be read on a machine with other work (`--load N`). Killed
+// when destroyed, and by the kernel if the bench dies first.
+class BusyLoad {
+public:
+    explicit BusyLoad(int count);
+    ~BusyLoad();
+    BusyLoad(const BusyLoad &) = delete;
+    BusyLoad &operator=(const BusyLoad &) = delete;
+    [[nodiscard]] int count() const { return int(m_pids.size()); }
+
+private:
+    std::vector<qint64> m_pids;
+};
 
 // The benches' simulated wires are paced like a 19200-baud line, 8N1: ten bits a byte.
 inline constexpr int kPaceBaud = 19200;

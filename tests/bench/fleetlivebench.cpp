@@ -1,7 +1,10 @@
 #include "fleetlivebench.h"
 
+#include "allocationcount.h"
 #include "benchsupport.h"
+#include "eventtally.h"
 #include "fleetday.h"
+#include "processactivity.h"
 #include "simstations.h"
 #include "wirefloor.h"
 
@@ -139,7 +142,7 @@ int runFleetLiveBench(const QStringList &args) {
     if (args.contains(QStringLiteral("--help")) || args.contains(QStringLiteral("-h"))) {
         QTextStream(stdout)
             << "Usage: tipscope-bench fleet [--stations N] [--minutes M] [--chunk-ms C] "
-               "[--by-intervals]\n"
+               "[--by-intervals] [--load L]\n"
                "N simulated lines (default 32; a DME and a feeder each, TCP, paced at 19200 "
                "baud)\n"
                "in one workspace with the fleet overview shown, measured for M minutes (default "
@@ -151,14 +154,18 @@ int runFleetLiveBench(const QStringList &args) {
                "each answer over in chunks every C ms, as a USB adapter or a device server does\n"
                "(default 0: a byte at a time, the most wake-ups). First, for 30 s, the wire\n"
                "floor: a bare epoll client on the same simulators, the least CPU any client\n"
-               "spends on these wires.\n";
+               "spends on these wires. --load runs L busy loops beside the whole run (floor\n"
+               "included), for the figures on a machine with other work.\n";
         return 0;
     }
     const std::optional<qint64> stationsOption = wholeOption(args, "--stations", 32, 1, 256);
     const std::optional<double> minutesOption = numberOption(args, "--minutes", 10, 0.1, 24 * 60);
     const std::optional<qint64> chunkOption = wholeOption(args, "--chunk-ms", 0, 0, 1000);
-    if (!stationsOption || !minutesOption || !chunkOption)
+    const std::optional<qint64> loadOption = wholeOption(args, "--load", 0, 0, 64);
+    if (!stationsOption || !minutesOption || !chunkOption || !loadOption)
         return 2;
+    const BusyLoad load{int(*loadOption)};
+    printFigure(QStringLiteral("fleet.load_processes"), load.count(), QStringLiteral("loops"), 0);
     const int stations = int(*stationsOption);
     const double minutes = *minutesOption;
     const int chunkMs = int(*chunkOption);
@@ -207,10 +214,16 @@ int runFleetLiveBench(const QStringList &args) {
     page.clearTileLatencies();
 
     const Snapshot before = snapshot(workspace, sims);
+    const EventTally events;
+    const ProcessActivity activity(QCoreApplication::applicationPid());
+    const qint64 allocationsBefore = allocationsSoFar();
     QElapsedTimer wall;
     wall.start();
     waitMs(int(minutes * 60000));
     const Snapshot after = snapshot(workspace, sims);
+    const std::optional<qint64> syscalls = activity.syscalls();
+    const qint64 wakeUps = activity.wakeUps();
+    const qint64 allocations = allocationsSoFar() - allocationsBefore;
     const double seconds = double(wall.elapsed()) / 1000;
     const std::vector<double> latencies = page.tileLatenciesMs();
 
@@ -227,6 +240,27 @@ int runFleetLiveBench(const QStringList &args) {
     printFigure(QStringLiteral("fleet.floor_cpu_percent_at_fleet_rate"), floor->cpuPercentAt(rate),
                 QStringLiteral("% of one core"));
     printFigure(QStringLiteral("fleet.cpu_over_floor"), usPerTx / floor->cpuUsPerTx, QString(), 2);
+    // Where the time goes, per transaction, beside the floor's.
+    const double transactions = rate * seconds;
+    const auto perTx = [&](const char *name, double count) {
+        printFigure(QStringLiteral("fleet.%1_per_tx").arg(QLatin1String(name)),
+                    transactions > 0 ? count / transactions : 0, QString(), 2);
+    };
+    if (syscalls)
+        perTx("syscalls", double(*syscalls));
+    else
+        printNote(QStringLiteral("fleet.syscalls_per_tx: not measured, %1")
+                      .arg(activity.whyNoSyscalls()));
+    if (floor->syscallsPerTx)
+        printFigure(QStringLiteral("fleet.floor_syscalls_per_tx"), *floor->syscallsPerTx, QString(),
+                    2);
+    perTx("wakeups", double(wakeUps));
+    printFigure(QStringLiteral("fleet.floor_wakeups_per_tx"), floor->wakeUpsPerTx, QString(), 2);
+    perTx("timer_events", double(events.count(QEvent::Timer)));
+    perTx("socket_events", double(events.count(QEvent::SockAct)));
+    perTx("queued_calls", double(events.count(QEvent::MetaCall)));
+    perTx("events", double(events.total()));
+    perTx("cxx_allocations", double(allocations));
     ChannelRates rates{};
     for (size_t c = 0; c < rates.size(); ++c) {
         rates[c] = double(after.samples[c] - before.samples[c]) / seconds / stations;

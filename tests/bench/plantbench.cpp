@@ -4,6 +4,7 @@
 #include "benchsupport.h"
 #include "mosquittobroker.h"
 #include "plantsubscriber.h"
+#include "processactivity.h"
 #include "simstations.h"
 #include "wirefloor.h"
 
@@ -44,6 +45,7 @@ struct Options {
     int intervalMs = 1000;
     int pace = 19200;
     int chunkMs = 0;
+    int load = 0;
 };
 
 // Everything the bench starts, destroyed in reverse: the agent stops first (publishing offline
@@ -77,6 +79,7 @@ int parseOptions(const QStringList &args, Options *o) {
          number("pace", "The stations' wire in baud, 0 for unpaced (default 19200)."),
          number("chunk-ms", "The stations hand their answers over every N ms, as a USB adapter "
                             "does (default 0: a byte at a time)."),
+         number("load", "Busy loops beside the whole run, floor included (default 0)."),
          {{QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show this help.")}});
     if (!p.parse(QStringList{QStringLiteral("tipscope-bench plant")} + args)) {
         printError(p.errorText());
@@ -100,7 +103,7 @@ int parseOptions(const QStringList &args, Options *o) {
                     read("outage-s", &o->outageS, 1) &&
                     read("joints-per-minute", &o->jointsPerMinute, 1) &&
                     read("interval-ms", &o->intervalMs, 100) && read("pace", &o->pace, 0) &&
-                    read("chunk-ms", &o->chunkMs, 0);
+                    read("chunk-ms", &o->chunkMs, 0) && read("load", &o->load, 0);
     return ok ? -1 : 2;
 }
 
@@ -182,13 +185,42 @@ CpuTimes cpuTimes(Plant &plant) {
     return t;
 }
 
+// The agent's cost per transaction beside the floor's: CPU, system calls and wake-ups.
+void printAgentCost(const Plant &plant, double cpuUs, double transactions,
+                    const ProcessActivity &activity) {
+    if (transactions <= 0) {
+        printNote(QStringLiteral("plant.cpu_over_floor: no transactions counted"));
+        return;
+    }
+    printFigure(QStringLiteral("plant.agent_cpu_us_per_tx"), cpuUs / transactions,
+                QStringLiteral("us"));
+    printFigure(QStringLiteral("plant.cpu_over_floor"),
+                cpuUs / transactions / plant.floor->cpuUsPerTx, QString(), 2);
+    if (const std::optional<qint64> syscalls = activity.syscalls())
+        printFigure(QStringLiteral("plant.syscalls_per_tx"), double(*syscalls) / transactions,
+                    QString(), 2);
+    else
+        printNote(QStringLiteral("plant.syscalls_per_tx: not measured, %1")
+                      .arg(activity.whyNoSyscalls()));
+    if (plant.floor->syscallsPerTx)
+        printFigure(QStringLiteral("plant.floor_syscalls_per_tx"), *plant.floor->syscallsPerTx,
+                    QString(), 2);
+    printFigure(QStringLiteral("plant.wakeups_per_tx"), double(activity.wakeUps()) / transactions,
+                QString(), 2);
+    printFigure(QStringLiteral("plant.floor_wakeups_per_tx"), plant.floor->wakeUpsPerTx, QString(),
+                2);
+}
+
 void measureLive(Plant &plant, int seconds) {
+    const std::optional<qint64> answersBefore = answersOf(plant.stations);
+    const ProcessActivity activity(plant.agent.process().processId());
     const CpuTimes before = cpuTimes(plant);
     plant.subscriber.startMeasuring();
     QElapsedTimer wall;
     wall.start();
     (void)runUntil([] { return false; }, seconds * 1000);
     const CpuTimes after = cpuTimes(plant);
+    const std::optional<qint64> answersAfter = answersOf(plant.stations);
     const double s = double(wall.elapsed()) / 1000;
     const auto percent = [s](qint64 us) { return 100.0 * double(us) / (s * 1e6); };
     const QList<double> &latencies = plant.subscriber.liveLatenciesMs();
@@ -196,6 +228,15 @@ void measureLive(Plant &plant, int seconds) {
     const QString core = QStringLiteral("% of one core");
     printFigure(QStringLiteral("plant.agent_cpu_pct"), percent(after.agentUs - before.agentUs),
                 core);
+    if (answersBefore && answersAfter) {
+        const double transactions = double(*answersAfter - *answersBefore);
+        printFigure(QStringLiteral("plant.agent_tx_per_s"), transactions / s,
+                    QStringLiteral("tx/s"));
+        printAgentCost(plant, double(after.agentUs - before.agentUs), transactions, activity);
+    } else {
+        printNote(QStringLiteral("plant.cpu_over_floor: a station did not say how many requests "
+                                 "it answered"));
+    }
     // For context: both share the machine with the agent.
     printFigure(QStringLiteral("plant.stations_cpu_pct"),
                 percent(after.stationsUs - before.stationsUs), core);
@@ -333,6 +374,8 @@ int runPlantBench(const QStringList &args) {
     // The subscriber's retries during the outage would bury the figures; connectTo() says why it
     // could not connect.
     QLoggingCategory::setFilterRules(QStringLiteral("tipscope.mqtt=false"));
+    const BusyLoad load(options.load);
+    printFigure(QStringLiteral("plant.load_processes"), load.count(), QStringLiteral("loops"), 0);
     Plant plant;
     if (!startPlant(plant, options))
         return 1;

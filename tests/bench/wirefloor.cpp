@@ -1,5 +1,7 @@
 #include "wirefloor.h"
 
+#include "processactivity.h"
+
 #include "protocol/catalog.h"
 #include "protocol/frame.h"
 
@@ -145,6 +147,7 @@ std::optional<WireFloor> measureWireFloor(const std::vector<SimStation> &station
         send(line);
 
     qint64 answered = 0;
+    const ProcessActivity activity(::getpid(), ::gettid());
     const qint64 cpuBefore = threadCpuUs(), userBefore = threadCpuUs(true);
     QElapsedTimer wall;
     wall.start();
@@ -161,12 +164,20 @@ std::optional<WireFloor> measureWireFloor(const std::vector<SimStation> &station
     }
     const double seconds = double(wall.elapsed()) / 1000;
     const qint64 cpuUs = threadCpuUs() - cpuBefore, userUs = threadCpuUs(true) - userBefore;
+    const std::optional<qint64> syscalls = activity.syscalls();
+    const qint64 wakeUps = activity.wakeUps();
     if (answered == 0) {
         *error = QStringLiteral("no station answered the floor's requests");
         return std::nullopt;
     }
-    return WireFloor{double(answered) / seconds, double(cpuUs) / double(answered),
-                     double(userUs) / double(answered)};
+    WireFloor floor;
+    floor.txPerS = double(answered) / seconds;
+    floor.cpuUsPerTx = double(cpuUs) / double(answered);
+    floor.userUsPerTx = double(userUs) / double(answered);
+    if (syscalls)
+        floor.syscallsPerTx = double(*syscalls) / double(answered);
+    floor.wakeUpsPerTx = double(wakeUps) / double(answered);
+    return floor;
 }
 
 } // namespace tipscope::bench

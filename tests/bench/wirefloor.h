@@ -24,6 +24,8 @@ struct WireFloor {
     double txPerS = 0;     // answered transactions a second, summed over the lines
     double cpuUsPerTx = 0; // the measuring thread's user + system CPU time per transaction
     double userUsPerTx = 0;
+    std::optional<double> syscallsPerTx; // where the system calls could be counted
+    double wakeUpsPerTx = 0;             // the times the thread slept in epoll_wait and woke
 
     // What the floor costs at another client's rate, in % of one core.
     [[nodiscard]] double cpuPercentAt(double txPerS) const { return cpuUsPerTx * txPerS / 1e4; }
