@@ -110,6 +110,14 @@ void MqttClient::onLookedUp(const QHostInfo &info) {
     connectNow();
 }
 
+void MqttClient::setQuiet(bool on) {
+    m_pump->setQuiet(on);
+}
+
+bool MqttClient::watchesReads() const {
+    return m_pump->watchesReads();
+}
+
 void MqttClient::connectNow() {
     const QByteArray host = m_settings.host.toUtf8();
     errno = 0;

@@ -69,6 +69,10 @@ public:
 
     // Used from the next start() on.
     void setSettings(const MqttSettings &settings);
+    // A client that only holds a will and publishes now and then: its socket is watched only
+    // around what it sends (MqttPump::setQuiet()); what else comes is read within a second.
+    void setQuiet(bool on);
+    [[nodiscard]] bool watchesReads() const;
     void start();
     void stop();
 

@@ -1,5 +1,6 @@
 #include "mqttpump.h"
 
+#include <QPointer>
 #include <QSocketNotifier>
 #include <cerrno>
 #include <mosquitto.h>
@@ -72,8 +73,29 @@ void MqttPump::sync() {
         connect(m_write.get(), &QSocketNotifier::activated, this, &MqttPump::onWritable);
         m_tick.start();
     }
+    const bool wantsWrite = m_write && mosquitto_want_write(m_client);
     if (m_write)
-        m_write->setEnabled(mosquitto_want_write(m_client));
+        m_write->setEnabled(wantsWrite);
+    // Outside its own handling, a sync follows something the client did (connected, published,
+    // subscribed): an answer is due.
+    if (m_quiet && (wantsWrite || !m_servicing))
+        stayAwake();
+}
+
+void MqttPump::setQuiet(bool on) {
+    m_quiet = on;
+    if (m_read && !on)
+        m_read->setEnabled(true);
+}
+
+bool MqttPump::watchesReads() const {
+    return m_read && m_read->isEnabled();
+}
+
+void MqttPump::stayAwake() {
+    m_idleTicks = 0;
+    if (m_read)
+        m_read->setEnabled(true);
 }
 
 void MqttPump::report(int rc) {
@@ -91,7 +113,12 @@ void MqttPump::report(int rc) {
         Q_EMIT hungUp();
         return;
     }
+    const bool outer = !m_servicing;
+    m_servicing = true;
+    const QPointer<MqttPump> alive(this); // its owner may end with what it handles
     Q_EMIT serviced(rc, errnoValue);
+    if (alive && outer)
+        m_servicing = false;
 }
 
 void MqttPump::onReadable() {
@@ -106,13 +133,24 @@ void MqttPump::onReadable() {
 }
 
 void MqttPump::onWritable() {
-    if (m_client)
-        report(mosquitto_loop_write(m_client, 1));
+    if (!m_client)
+        return;
+    if (m_quiet)
+        stayAwake();
+    report(mosquitto_loop_write(m_client, 1));
 }
 
 void MqttPump::onTick() {
-    if (m_client)
-        report(mosquitto_loop_misc(m_client));
+    if (!m_client)
+        return;
+    const int socket = m_socket;
+    if (m_quiet && m_read && !m_read->isEnabled() && hasInput(socket))
+        onReadable();
+    if (m_socket != socket || !m_client)
+        return; // the read closed or replaced the socket, and said so
+    report(mosquitto_loop_misc(m_client));
+    if (m_quiet && m_read && ++m_idleTicks >= kQuietAfterTicks)
+        m_read->setEnabled(false);
 }
 
 } // namespace tipscope::mqtt

@@ -10,6 +10,12 @@
 // asks the socket itself (poll with no wait); if it hung up while libmosquitto says all is
 // well, the pump stops watching it and emits `hungUp`. The next connect closes it.
 //
+// A client that is idle but for its own few messages (a device's presence, one of dozens) need
+// not be watched between them: quiet (setQuiet()), its read notifier is on only from anything it
+// sends until kQuietAfterTicks ticks later, long after the broker's answer, and each tick reads
+// what came meanwhile (a ping's answer, a hang-up). Every watched socket costs each turn of the
+// event loop a look by poll(), so dozens of idle presence sockets weighed on every wire's byte.
+//
 // After every libmosquitto call it makes, the pump emits `serviced` with the return code and
 // errno as the call left it; the owner handles what the call caused and then calls sync(), as
 // it must after anything else that may have opened, closed or queued on the socket (connecting,
@@ -38,6 +44,10 @@ public:
     // Follows the client's socket: new notifiers for a new socket, none for a closed one, the
     // write notifier on exactly while libmosquitto wants to write.
     void sync();
+    void setQuiet(bool on);
+    // Whether the event loop watches the socket for reading now.
+    [[nodiscard]] bool watchesReads() const;
+    static constexpr int kQuietAfterTicks = 2;
 
 Q_SIGNALS:
     void serviced(int rc, int errnoValue);
@@ -49,6 +59,7 @@ private:
     void onReadable();
     void onWritable();
     void onTick();
+    void stayAwake();
 
     mosquitto *m_client = nullptr;
     int m_socket = -1;
@@ -56,6 +67,9 @@ private:
     std::unique_ptr<QSocketNotifier> m_read;
     std::unique_ptr<QSocketNotifier> m_write;
     QTimer m_tick;
+    bool m_quiet = false;
+    bool m_servicing = false; // while `serviced` is being handled
+    int m_idleTicks = 0;
 };
 
 } // namespace tipscope::mqtt

@@ -39,6 +39,8 @@ DevicePublisher::DevicePublisher(mqtt::MqttClient &shared, const AgentConfig &co
     settings.will = {m_place.root + QStringLiteral("/status"),
                      QJsonDocument(will).toJson(QJsonDocument::Compact), 1, true};
     m_presence->setSettings(settings);
+    // Dozens of presence connections sit idle: unwatched, they cost the lines' wires nothing.
+    m_presence->setQuiet(true);
     connect(m_presence.get(), &mqtt::MqttClient::connected, this, &DevicePublisher::publishStatus);
     connect(m_presence.get(), &mqtt::MqttClient::published, this, [this](int id) {
         if (id == m_offlineId && id != 0) {

@@ -1,7 +1,9 @@
 // MqttClient against a real broker: a message goes from one client to another, QoS 1 is
 // reported published on the broker's PUBACK, retained messages reach late subscribers (our own
 // and mosquitto_sub), mosquitto_pub's messages reach our subscriber, and publishing is refused
-// and counted while disconnected or once too many messages wait.
+// and counted while disconnected or once too many messages wait. A quiet client (a device's
+// presence) is watched only around what it sends and still hears its broker go.
+#include "mqtt/mqttpump.h"
 #include "mqtttesting.h"
 #include "testmain.h"
 
@@ -26,6 +28,9 @@ private Q_SLOTS:
     void publishingIsRefusedAndCountedWhileNotConnected();
     void publishingIsRefusedOnceTooManyMessagesWait();
     void invalidTopicsAndFiltersAreRefused();
+    void aQuietClientIsWatchedOnlyAroundWhatItSends();
+    void aQuietClientHearsItsBrokerGo();
+    void aQuietClientReadsAnAcknowledgementThatCameLate();
 };
 
 void TstMqttClient::messageFromOneClientReachesAnotherThatSubscribed_data() {
@@ -212,6 +217,67 @@ void TstMqttClient::invalidTopicsAndFiltersAreRefused() {
 }
 
 TIPSCOPE_TEST_GUILESS_MAIN(TstMqttClient)
+
+void TstMqttClient::aQuietClientIsWatchedOnlyAroundWhatItSends() {
+    MosquittoBroker broker;
+    TIPSCOPE_START_BROKER(broker);
+    MqttClient subscriber;
+    QSignalSpy received(&subscriber, &MqttClient::messageReceived);
+    QVERIFY(subscribeAndConnect(subscriber, brokerSettings(broker, QStringLiteral("subscriber")),
+                                QStringLiteral("tipscope/test/#")));
+    MqttClient quiet;
+    quiet.setQuiet(true);
+    QSignalSpy published(&quiet, &MqttClient::published);
+    QVERIFY(connectClient(quiet, brokerSettings(broker, QStringLiteral("quiet"))));
+    // Idle, it is let go of after at most kQuietAfterTicks ticks and a tick's lateness.
+    QTRY_VERIFY_WITH_TIMEOUT(!quiet.watchesReads(), (MqttPump::kQuietAfterTicks + 2) * 1000);
+
+    for (int i = 0; i < 2; ++i) {
+        const MqttResult sent =
+            quiet.publish(QStringLiteral("tipscope/test/status"), "online", 1, true);
+        QVERIFY2(sent.ok(), qPrintable(sent.error));
+        QVERIFY(quiet.watchesReads()); // the broker's acknowledgement is on its way
+        QTRY_COMPARE_WITH_TIMEOUT(published.size(), i + 1, 1000); // read at once, not on a tick
+        QTRY_COMPARE_WITH_TIMEOUT(received.size(), i + 1, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(!quiet.watchesReads(), (MqttPump::kQuietAfterTicks + 2) * 1000);
+    }
+    QCOMPARE(quiet.state(), MqttClient::State::Connected);
+    // Its keep-alive comes and goes unwatched: a ping goes out after kTestKeepAliveSeconds of
+    // silence, and an answer not read within as long again would end the connection. The
+    // answer is read on a tick.
+    QTest::qWait(2 * kTestKeepAliveSeconds * 1000 + 1000);
+    QCOMPARE(quiet.state(), MqttClient::State::Connected);
+}
+
+void TstMqttClient::aQuietClientHearsItsBrokerGo() {
+    MosquittoBroker broker;
+    TIPSCOPE_START_BROKER(broker);
+    MqttClient quiet;
+    quiet.setQuiet(true);
+    QVERIFY(connectClient(quiet, brokerSettings(broker, QStringLiteral("quiet"))));
+    QTRY_VERIFY_WITH_TIMEOUT(!quiet.watchesReads(), (MqttPump::kQuietAfterTicks + 2) * 1000);
+    QSignalSpy lost(&quiet, &MqttClient::disconnected);
+    broker.stop();
+    QVERIFY(lost.wait(3000)); // within a tick or two
+    QVERIFY(!lost.first().at(0).toString().isEmpty());
+}
+
+void TstMqttClient::aQuietClientReadsAnAcknowledgementThatCameLate() {
+    MosquittoBroker broker;
+    TIPSCOPE_START_BROKER(broker);
+    MqttClient quiet;
+    quiet.setQuiet(true);
+    QSignalSpy published(&quiet, &MqttClient::published);
+    QVERIFY(connectClient(quiet, brokerSettings(broker, QStringLiteral("quiet"))));
+    broker.freeze(); // a broker too busy to answer for a while
+    QVERIFY(quiet.publish(QStringLiteral("tipscope/test/status"), "online", 1, true).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(!quiet.watchesReads(), (MqttPump::kQuietAfterTicks + 2) * 1000);
+    QVERIFY(published.isEmpty());
+    broker.thaw();
+    // Unwatched, the acknowledgement is read on the next tick.
+    QTRY_COMPARE_WITH_TIMEOUT(published.size(), 1, 2500);
+    QCOMPARE(quiet.state(), MqttClient::State::Connected);
+}
 
 } // namespace tst_mqttclient
 #include "tst_mqttclient.moc"
