@@ -7,6 +7,7 @@
 #include "unixsignals.h"
 
 #include "i18n/translations.h"
+#include "link/epolldispatcher.h"
 #include "mqtt/mqttsetup.h"
 #include "plant/plantagent.h"
 
@@ -51,6 +52,9 @@ QString summary(const plant::AgentConfig &c) {
 } // namespace
 
 int main(int argc, char *argv[]) {
+    // Dozens of lines whose answers come a byte or two at a time: each turn of the loop costs
+    // what is ready, not what is watched (docs/performance.md). TIPSCOPE_EVENT_LOOP=qt keeps Qt's.
+    (void)link::useEpollUnlessTold();
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("tipscope-agent"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TIPSCOPE_VERSION));

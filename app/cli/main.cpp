@@ -3,6 +3,7 @@
 #include "clicommands.h"
 #include "cliworkspace.h"
 #include "i18n/translations.h"
+#include "link/epolldispatcher.h"
 
 #include <QGuiApplication>
 #include <cstring>
@@ -26,8 +27,12 @@ bool wantsPdf(int argc, char *argv[]) {
 // no display (a cron job, an SSH session) and the command shows no window, so it is forced; every
 // other command keeps the plain QCoreApplication, which loads no platform plugin at all.
 std::unique_ptr<QCoreApplication> makeApplication(int &argc, char *argv[]) {
-    if (!wantsPdf(argc, argv))
+    if (!wantsPdf(argc, argv)) {
+        // A monitor of a workspace serves dozens of lines: each turn of the loop costs what is
+        // ready, not what is watched (docs/performance.md). A window system needs Qt's own loop.
+        (void)tipscope::link::useEpollUnlessTold();
         return std::make_unique<QCoreApplication>(argc, argv);
+    }
     qputenv("QT_QPA_PLATFORM", "offscreen");
     return std::make_unique<QGuiApplication>(argc, argv);
 }
