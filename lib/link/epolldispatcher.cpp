@@ -59,47 +59,65 @@ bool EpollDispatcher::processEvents(QEventLoop::ProcessEventsFlags flags) {
     const bool sockets = !(flags & QEventLoop::ExcludeSocketNotifiers);
     int waitMs = 0;
     // A descriptor epoll cannot watch (a regular file) is always ready, as poll() says of it.
-    if ((flags & QEventLoop::WaitForMoreEvents) && !(sockets && !m_alwaysReady.isEmpty()))
+    if ((flags & QEventLoop::WaitForMoreEvents) && !(sockets && alwaysReadyToActivate()))
         waitMs = timers ? timeToNextTimer(nowUs()) : -1;
     if (waitMs != 0)
         Q_EMIT aboutToBlock();
     int ready = 0;
+    // A wake-up drained counts as an event, as in Qt's loops: processEvents(flags, maxtime)
+    // goes on while there is something, and a queued call that posts the next is something.
+    bool any = false;
     if (sockets) {
         ready = ::epoll_wait(m_epoll, m_events.data(), int(m_events.size()), waitMs);
+        if (ready < 0 && errno != EINTR) // a signal ends the wait early, and nothing is lost
+            qWarning("EpollDispatcher: epoll_wait failed: %s", strerror(errno));
     } else {
         // Only a wake-up or a timer may end the wait: the notifiers stay out of it.
         pollfd wake{m_wake, POLLIN, 0};
         if (::poll(&wake, 1, waitMs) == 1)
-            drainWake();
+            any = drainWake();
     }
     if (waitMs != 0)
         Q_EMIT awake();
-    bool any = false;
     if (sockets)
-        any = activateNotifiers(qMax(0, ready));
+        any = activateNotifiers(qMax(0, ready)) || any;
     if (timers)
         any = activateTimers() || any;
     return any;
 }
 
+bool EpollDispatcher::alwaysReadyToActivate() const {
+    for (int fd : m_alwaysReady) {
+        const Watch &w = m_watches[fd];
+        if (w.read || w.write)
+            return true;
+    }
+    return false;
+}
+
 bool EpollDispatcher::activateNotifiers(int ready) {
     std::vector<QSocketNotifier *> list;
+    bool woken = false;
     for (int i = 0; i < ready; ++i) {
         const int fd = m_events[size_t(i)].data.fd;
         if (fd == m_wake) {
-            drainWake();
+            woken = drainWake();
             continue;
         }
         const auto w = m_watches.constFind(fd);
-        if (w == m_watches.cend())
+        if (w == m_watches.cend()) {
+            // In the set but watched by nobody (closed and reopened behind its notifiers'
+            // back): out of the set, or it would end every wait.
+            (void)::epoll_ctl(m_epoll, EPOLL_CTL_DEL, fd, nullptr);
             continue;
+        }
         const quint32 e = m_events[size_t(i)].events;
         // A hang-up or an error is news to whoever reads or writes, as poll() has it.
         if (w->read && (e & (EPOLLIN | EPOLLHUP | EPOLLERR)))
             list.push_back(w->read);
         if (w->write && (e & (EPOLLOUT | EPOLLHUP | EPOLLERR)))
             list.push_back(w->write);
-        if (w->exception && (e & EPOLLPRI))
+        if (w->exception && (e & (EPOLLPRI | EPOLLHUP | EPOLLERR)))
             list.push_back(w->exception);
     }
     for (int fd : std::as_const(m_alwaysReady)) {
@@ -109,13 +127,16 @@ bool EpollDispatcher::activateNotifiers(int ready) {
                 list.push_back(n);
     }
     // A notifier activated may unregister one still waiting in this list (unregister sets it
-    // to null) or run a loop of its own, with a list of its own.
+    // to null) or run a loop of its own, with a list of its own: a notifier is taken out of
+    // every list as it is activated, so a readiness seen by two loops is delivered once (a
+    // handler reading a blocking descriptor would otherwise wait for bytes that never come).
     m_readyLists.push_back(&list);
-    bool any = false;
+    bool any = woken;
     for (size_t i = 0; i < list.size(); ++i) {
-        QSocketNotifier *n = std::exchange(list[i], nullptr);
+        QSocketNotifier *n = list[i];
         if (!n)
             continue;
+        forgetReady(n);
         QEvent activation(QEvent::SockAct);
         QCoreApplication::sendEvent(n, &activation);
         any = true;
@@ -124,10 +145,18 @@ bool EpollDispatcher::activateNotifiers(int ready) {
     return any;
 }
 
-void EpollDispatcher::drainWake() {
-    m_wakePending = false;
+// Read first, then let the next wakeUp() write: the other way round, a wakeUp() between the two
+// would be read here with the flag still saying pending, and no wakeUp() would write again.
+bool EpollDispatcher::drainWake() {
     quint64 count = 0;
-    (void)!::read(m_wake, &count, sizeof count);
+    const bool read = ::read(m_wake, &count, sizeof count) == ssize_t(sizeof count);
+    m_wakePending = false;
+    return read;
+}
+
+void EpollDispatcher::forgetReady(QSocketNotifier *notifier) {
+    for (std::vector<QSocketNotifier *> *list : m_readyLists)
+        std::replace(list->begin(), list->end(), notifier, static_cast<QSocketNotifier *>(nullptr));
 }
 
 void EpollDispatcher::registerSocketNotifier(QSocketNotifier *notifier) {
@@ -139,12 +168,13 @@ void EpollDispatcher::registerSocketNotifier(QSocketNotifier *notifier) {
     if (*slot && *slot != notifier)
         qWarning("EpollDispatcher: a second notifier of one kind for socket %d", fd);
     *slot = notifier;
-    updateWatch(fd);
+    // Told again even where the set seems to hold it: the descriptor may be a new one under
+    // an old number, which the set dropped when the old one closed.
+    updateWatch(fd, true);
 }
 
 void EpollDispatcher::unregisterSocketNotifier(QSocketNotifier *notifier) {
-    for (std::vector<QSocketNotifier *> *list : m_readyLists)
-        std::replace(list->begin(), list->end(), notifier, static_cast<QSocketNotifier *>(nullptr));
+    forgetReady(notifier);
     const int fd = int(notifier->socket());
     const auto w = m_watches.find(fd);
     if (w == m_watches.end())
@@ -155,13 +185,13 @@ void EpollDispatcher::unregisterSocketNotifier(QSocketNotifier *notifier) {
     updateWatch(fd);
 }
 
-void EpollDispatcher::updateWatch(int fd) {
+void EpollDispatcher::updateWatch(int fd, bool force) {
     const auto w = m_watches.find(fd);
     if (w == m_watches.end())
         return;
     const quint32 want = (w->read ? quint32(EPOLLIN) : 0) | (w->write ? quint32(EPOLLOUT) : 0) |
                          (w->exception ? quint32(EPOLLPRI) : 0);
-    if (want == w->events)
+    if (want == w->events && !(force && want != 0 && !m_alwaysReady.contains(fd)))
         return;
     if (want == 0) {
         if (!m_alwaysReady.remove(fd))
@@ -249,7 +279,9 @@ bool EpollDispatcher::activateTimers() {
     for (const auto &[when, id] : due) {
         // Looked up again each time: an earlier timer's event may have stopped or added timers.
         auto t = find(id);
-        if (t == m_timers.end() || t->active)
+        // Gone, firing in an outer turn, fired already by a loop a handler ran, or restarted
+        // under the same id (Qt gives a freed id out again first): not due now.
+        if (t == m_timers.end() || t->active || t->dueUs > now)
             continue;
         // A timer that fell behind (a long handler, a suspended machine) fires once and keeps
         // its rhythm from now, as Qt's do.

@@ -70,13 +70,15 @@ private:
         bool active = false; // its event is being delivered: it does not fire again inside
     };
 
-    void updateWatch(int fd);
+    void updateWatch(int fd, bool force = false);
+    [[nodiscard]] bool alwaysReadyToActivate() const;
+    void forgetReady(QSocketNotifier *notifier);
     [[nodiscard]] static qint64 nowUs();
     // The wait until the next timer is due, in ms; -1 when none is registered.
     [[nodiscard]] int timeToNextTimer(qint64 nowUs) const;
     bool activateTimers();
     bool activateNotifiers(int ready);
-    void drainWake();
+    bool drainWake();
 
     static constexpr int kMaxReadyPerTurn = 256;
 

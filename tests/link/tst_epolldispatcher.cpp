@@ -16,6 +16,7 @@
 #include <QTemporaryFile>
 #include <QTest>
 #include <QTimer>
+#include <atomic>
 #include <cstring>
 #include <fcntl.h>
 #include <functional>
@@ -78,6 +79,11 @@ private Q_SLOTS:
     void postedCallsAndDeferredDeletesAreCarriedOut();
     void anotherThreadEndsTheWait();
     void aLoopInsideAHandlerGoesOn();
+    void aTimerFiredByALoopInsideAHandlerIsNotFiredAgain();
+    void aTimerRestartedByAnotherIsNotFiredAtOnce();
+    void aNotifierActivatedByALoopInsideAHandlerIsNotActivatedAgain();
+    void aFloodOfCallsFromAnotherThreadIsDeliveredWhole();
+    void aChainOfQueuedCallsRunsWithinOneBoundedProcessEvents();
     void qtNetworkClassesTalkAcrossIt();
 };
 
@@ -250,6 +256,123 @@ void TstEpollDispatcher::aLoopInsideAHandlerGoesOn() {
     pair.send("x");
     QVERIFY(spinUntil([&] { return outer == 1 && innerTimers == 3; }));
     QCOMPARE(outer, 1);
+}
+
+void TstEpollDispatcher::aTimerFiredByALoopInsideAHandlerIsNotFiredAgain() {
+    // Both due in the same turn; the first runs the loop in its handler, which fires the second.
+    QTimer first, second;
+    first.setSingleShot(true);
+    int seconds = 0;
+    connect(&second, &QTimer::timeout, this, [&] { ++seconds; });
+    connect(&first, &QTimer::timeout, this, [&] {
+        QElapsedTimer inner;
+        inner.start();
+        while (seconds == 0 && inner.elapsed() < 2000)
+            QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+    });
+    first.start(300);
+    second.start(300); // again 300 ms after it fired: not within the run below
+    runFor(450);
+    QCOMPARE(seconds, 1); // once in the inner loop, not again in the outer turn
+}
+
+void TstEpollDispatcher::aTimerRestartedByAnotherIsNotFiredAtOnce() {
+    QTimer first, second;
+    first.setSingleShot(true);
+    second.setSingleShot(true);
+    QElapsedTimer sinceRestart;
+    qint64 firedAfter = -1;
+    connect(&second, &QTimer::timeout, this, [&] { firedAfter = sinceRestart.elapsed(); });
+    connect(&first, &QTimer::timeout, this, [&] {
+        second.start(300); // kills its id and takes one: Qt hands the freed id out first
+        sinceRestart.start();
+    });
+    first.start(20);
+    second.start(20);
+    QVERIFY(spinUntil([&] { return firedAfter >= 0; }));
+    QVERIFY2(firedAfter >= 300, qPrintable(QString::number(firedAfter)));
+}
+
+void TstEpollDispatcher::aNotifierActivatedByALoopInsideAHandlerIsNotActivatedAgain() {
+    SocketPair a, b;
+    QSocketNotifier first(a.fd[0], QSocketNotifier::Read);
+    QSocketNotifier second(b.fd[0], QSocketNotifier::Read);
+    int firsts = 0, seconds = 0;
+    connect(&second, &QSocketNotifier::activated, this, [&] {
+        ++seconds;
+        (void)b.take();
+    });
+    connect(&first, &QSocketNotifier::activated, this, [&] {
+        ++firsts;
+        (void)a.take();
+        QElapsedTimer inner;
+        inner.start();
+        while (seconds == 0 && inner.elapsed() < 2000)
+            QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+    });
+    // Both ready before the loop looks: whichever comes first, the other is seen by both loops.
+    a.send("1");
+    b.send("2");
+    QVERIFY(spinUntil([&] { return firsts == 1 && seconds == 1; }));
+    runFor(50);
+    QCOMPARE(firsts, 1);
+    QCOMPARE(seconds, 1);
+}
+
+void TstEpollDispatcher::aFloodOfCallsFromAnotherThreadIsDeliveredWhole() {
+    // Each call may fall between the loop reading its wake-up and allowing the next: none may
+    // be left waiting for a wake-up that never comes.
+    constexpr int kCalls = 200000;
+    int delivered = 0;
+    std::atomic<bool> stop{false};
+    std::thread other([&] {
+        for (int i = 0; i < kCalls && !stop; ++i) {
+            QMetaObject::invokeMethod(
+                this, [&] { ++delivered; }, Qt::QueuedConnection);
+            if (i % 64 == 0)
+                std::this_thread::yield();
+        }
+    });
+    QEventLoop loop;
+    QTimer check;
+    connect(&check, &QTimer::timeout, &loop, [&] {
+        if (delivered == kCalls)
+            loop.quit();
+    });
+    check.start(20);
+    QTimer::singleShot(30000, &loop, &QEventLoop::quit);
+    loop.exec();
+    stop = true;
+    other.join();
+    QCOMPARE(delivered, kCalls);
+    // And a wake-up still ends a wait with no timer due.
+    check.stop();
+    bool quitByCall = false;
+    std::thread last([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        QMetaObject::invokeMethod(
+            &loop,
+            [&] {
+                quitByCall = true;
+                loop.quit();
+            },
+            Qt::QueuedConnection);
+    });
+    QTimer::singleShot(5000, &loop, &QEventLoop::quit);
+    loop.exec();
+    last.join();
+    QVERIFY(quitByCall);
+}
+
+void TstEpollDispatcher::aChainOfQueuedCallsRunsWithinOneBoundedProcessEvents() {
+    int links = 0;
+    std::function<void()> next = [&] {
+        if (++links < 10)
+            QMetaObject::invokeMethod(this, next, Qt::QueuedConnection);
+    };
+    QMetaObject::invokeMethod(this, next, Qt::QueuedConnection);
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 2000);
+    QCOMPARE(links, 10);
 }
 
 void TstEpollDispatcher::qtNetworkClassesTalkAcrossIt() {
