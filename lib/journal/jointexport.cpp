@@ -1,5 +1,7 @@
 #include "jointexport.h"
 
+#include "model/io/csv.h"
+
 #include <QDateTime>
 #include <QJsonArray>
 #include <QStringList>
@@ -53,11 +55,9 @@ QString csvField(const QJsonValue &value) {
         text = value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
     else if (value.isString())
         text = value.toString();
-    if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"')) ||
-        text.contains(QLatin1Char('\n')))
-        text = QLatin1Char('"') + QString(text).replace(QLatin1Char('"'), QStringLiteral("\"\"")) +
-               QLatin1Char('"');
-    return text;
+    // The one CSV cell rule of every export (model/io/csv.h): a line break inside a cell becomes
+    // a space, so that one record stays one line for every tool that reads it.
+    return model::csv::quoted(text);
 }
 } // namespace
 
