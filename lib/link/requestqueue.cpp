@@ -169,9 +169,8 @@ void RequestQueue::onBytesWritten(qint64 count) {
     if (m_bytesToConfirm > 0)
         return;
     m_state = State::Waiting;
-    const int requestBytes = int(m_current->request.raw.isEmpty() ? m_current->frame.encode().size()
-                                                                  : m_current->request.raw.size());
-    m_timer.start(answerBudgetMs(requestBytes, m_current->request.minTurnaroundMs));
+    // The size transmit() sent: encoding the frame again for it cost an allocation or three.
+    m_timer.start(answerBudgetMs(m_current->requestBytes, m_current->request.minTurnaroundMs));
 }
 
 bool RequestQueue::matches(const Entry &e, const Frame &a) const {
