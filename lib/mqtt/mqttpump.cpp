@@ -144,8 +144,12 @@ void MqttPump::onTick() {
     if (!m_client)
         return;
     const int socket = m_socket;
-    if (m_quiet && m_read && !m_read->isEnabled() && hasInput(socket))
+    if (m_quiet && m_read && !m_read->isEnabled() && hasInput(socket)) {
+        const QPointer<MqttPump> alive(this); // its owner may end with what the read caused
         onReadable();
+        if (!alive)
+            return;
+    }
     if (m_socket != socket || !m_client)
         return; // the read closed or replaced the socket, and said so
     report(mosquitto_loop_misc(m_client));
