@@ -185,12 +185,12 @@ private:
 // the same window), its timeouts, and the window's CPU.
 //
 // A window in which the window's thread waited for a processor for more than kBusyMachine of it
-// is printed but not judged: the machine was busy elsewhere (CTest runs eight tests side by side
-// on two cores; there a profile's compare, which redraws the Settings page's 150 values, came to
-// 0.88 with 9 % of the window spent waiting, against 0.98 on a quiet machine), and what the wire
-// lost there says as much of the machine as of the window. With two busy loops beside it the
-// thread waits 3-5 % and every window is judged. How many were not is printed; the pace each
-// view keeps is measured by `tipscope-bench gui`.
+// is printed but not judged, its rate and its timeouts: the machine was busy elsewhere (CTest runs
+// eight tests side by side on two cores; there a profile's compare, which redraws the Settings
+// page's 150 values, came to 0.88 with 9 % of the window spent waiting, against 0.98 on a quiet
+// machine), and what the wire lost there says as much of the machine as of the window. With two
+// busy loops beside it the thread waits 3-5 % and every window is judged. How many were not is
+// printed; the pace each view keeps is measured by `tipscope-bench gui`.
 class WireWatch : public QObject {
 public:
     explicit WireWatch(MainWindow &window)
@@ -259,11 +259,19 @@ private:
         } else {
             ++m_busy;
         }
-        if (now.timeouts > m_open.timeouts)
-            m_problems.append(QStringLiteral("%1: %2 timeouts in %3 s")
-                                  .arg(m_step)
-                                  .arg(now.timeouts - m_open.timeouts)
-                                  .arg(kWindowMs / 1000));
+        // The demo's wire is simulated in the window's own thread: with that thread kept waiting
+        // for a processor, its answers come late as its rate falls, so a timeout there is said
+        // with the rest of the busy window and judged only where the window is.
+        if (now.timeouts > m_open.timeouts) {
+            const QString what = QStringLiteral("%1: %2 timeouts in %3 s")
+                                     .arg(m_step)
+                                     .arg(now.timeouts - m_open.timeouts)
+                                     .arg(kWindowMs / 1000);
+            if (judged)
+                m_problems.append(what);
+            else
+                qInfo("%s (the machine was busy: not judged)", qPrintable(what));
+        }
         m_open = now;
     }
 
