@@ -204,14 +204,10 @@ double pacedWireLimitTxPerS(qint64 answered, qint64 bytes) {
     return answered > 0 && bytes > 0 ? kWireBytesPerSecond * double(answered) / double(bytes) : 0;
 }
 
-} // namespace tipscope::bench
-
-namespace tipscope::bench {
-
 BusyLoad::BusyLoad(int count) {
     for (int i = 0; i < count; ++i) {
-        // exec'd by a shell that dies with its parent (PDEATHSIG via setpriv is not everywhere):
-        // the loop checks its parent and ends when the bench is gone.
+        // A detached shell outlives a bench that dies without its destructor: the loop asks
+        // after the bench between its rounds and ends once it is gone.
         qint64 pid = 0;
         if (QProcess::startDetached(
                 QStringLiteral("/bin/sh"),

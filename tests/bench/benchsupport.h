@@ -55,7 +55,7 @@ void stopOnSignals();
 
 // `count` busy loops (`sh -c 'while :; do :; done'`) beside a benchmark, so that its figures,
 // the floor's and ours alike, can be read on a machine with other work (`--load N`). Killed
-// when destroyed, and by the kernel if the bench dies first.
+// when destroyed; a loop whose bench died first ends by itself within a round.
 class BusyLoad {
 public:
     explicit BusyLoad(int count);
