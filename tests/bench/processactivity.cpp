@@ -5,7 +5,6 @@
 #include <cerrno>
 #include <cstring>
 #include <linux/perf_event.h>
-#include <sys/ioctl.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
