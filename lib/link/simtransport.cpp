@@ -9,12 +9,14 @@ namespace tipscope::link {
 SimTransport::SimTransport(sim::SimLine &line, QObject *parent)
     : Transport(parent)
     , m_line(line) {
+    // The line transmits from its own timer or from the queued call that wrote to it, never
+    // inside write(), so its bytes are handed on at once. Queuing them again would let a
+    // request's answer timer that fell due in the same pass of the event loop (the thread held
+    // up past the answer budget) fire before an answer that had come in time: a real port's
+    // bytes are in the kernel by then, and both event loops read them before running timers.
     connect(&m_line, &sim::SimLine::transmit, this, [this](const QByteArray &bytes) {
         if (m_open)
-            QTimer::singleShot(0, this, [this, bytes] {
-                if (m_open)
-                    Q_EMIT received(bytes);
-            });
+            Q_EMIT received(bytes);
     });
 }
 

@@ -1,8 +1,8 @@
 // SimTransport: the in-process connection to a SimLine, for demo mode and tests.
 //
-// Bytes cross in queued calls, so the request queue sees the same asynchronous order of events
-// as with a real port. setPlugged(false) simulates a pulled cable: the transport reports
-// disconnected() and refuses to open until plugged again.
+// A write crosses in a queued call and the line's answer comes from its timer, so the request
+// queue sees the same asynchronous order of events as with a real port. setPlugged(false) simulates
+// a pulled cable: the transport reports disconnected() and refuses to open until plugged again.
 #pragma once
 
 #include "transport.h"

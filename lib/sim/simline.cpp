@@ -363,15 +363,18 @@ void SimLine::pump() {
             due = qMin<qsizetype>(o.bytes.size(), (now - o.startNs) / byteNs() + 1);
         if (m_chunkNs > 0 && due < o.bytes.size() && now < o.startNs + m_chunkNs)
             due = o.sent; // the adapter has not handed anything over yet
-        if (due > o.sent) {
-            const QByteArray part = o.bytes.mid(o.sent, due - o.sent);
-            o.sent = due;
+        const QByteArray part = due > o.sent ? o.bytes.mid(o.sent, due - o.sent) : QByteArray();
+        o.sent = qMax(o.sent, due);
+        const bool whole = o.sent == o.bytes.size();
+        // Done with the answer before it is handed on: a receiver may clear the wire from there.
+        if (whole)
+            m_out.erase(m_out.begin());
+        if (!part.isEmpty()) {
             m_stats.bytesSent += part.size();
             Q_EMIT transmit(part);
         }
-        if (o.sent < o.bytes.size())
+        if (!whole)
             break;
-        m_out.erase(m_out.begin());
     }
     if (m_out.empty())
         return;

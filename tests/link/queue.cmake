@@ -12,3 +12,5 @@ tipscope_add_test(tst_serialtransport SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_seri
     DEPENDS tipscope-sim)
 tipscope_add_test(tst_linklogging SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_linklogging.cpp
     LIBS tipscope_link)
+tipscope_add_test(tst_simtransport SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_simtransport.cpp
+    LIBS tipscope_link SANITIZED)
