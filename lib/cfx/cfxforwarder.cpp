@@ -74,6 +74,14 @@ void CfxForwarder::pump() {
         return;
     if (const auto opened = m_reader.keepOpen(m_journal.path()); !opened)
         return setProblem(opened.error());
+    pumpEvents();
+    if (m_board) // a station still to settle, or stations still to be known
+        m_waitTimer.start();
+}
+
+void CfxForwarder::pumpEvents() {
+    if (m_board && m_board->stationsKnown && !advanceBoard())
+        return;
     while (int(m_inFlight.size()) < kWindow) {
         const auto events = m_reader.unsentEvents(
             m_cursor, qMin(kBatch, kWindow - int(m_inFlight.size())), journal::SentChannel::Cfx);
@@ -85,38 +93,57 @@ void CfxForwarder::pump() {
         if (events->isEmpty())
             return;
         for (const journal::StoredEvent &event : *events) {
-            if (event.record.kind == journal::JournalEvent::Kind::ContextChange &&
-                !boardReady(event)) {
-                m_waitTimer.start();
-                return;
+            if (event.record.kind == journal::JournalEvent::Kind::ContextChange) {
+                // One board change at a time: the next waits for every station of this one.
+                if (m_board && m_board->row() != event.id)
+                    return;
+                const std::optional<bool> opened = openBoard(event);
+                if (!opened || !*opened)
+                    return;
+                m_cursor = event.id;
+                if (m_board && !advanceBoard())
+                    return;
+                continue;
             }
+            // A station's own events keep their place behind its board messages.
+            if (m_board && m_board->waiting.contains(event.record.device))
+                return;
             const std::optional<QList<Envelope>> made = envelopesOf(event);
             if (!made)
                 return; // the journal could not be read: the event waits, the problem is said
-            const QList<Envelope> &envelopes = *made;
-            if (envelopes.isEmpty())
+            if (made->isEmpty())
                 markSoon(event.id);
-            QList<quint64> tags;
-            for (const Envelope &envelope : envelopes) {
-                const quint64 tag = m_sender.send(toAmqpMessage(envelope, m_codec));
-                if (tag == 0) { // the connection went meanwhile: it stays in the journal
-                    for (const quint64 sent : tags)
-                        m_inFlight.erase(sent);
-                    return;
-                }
-                tags.append(tag);
-                m_inFlight.emplace(tag, event.id);
-            }
-            if (!envelopes.isEmpty())
-                m_unaccepted.insert(event.id, int(envelopes.size()));
+            else if (!send(*made, event.id))
+                return;
             m_cursor = event.id;
         }
     }
 }
 
+bool CfxForwarder::send(const QList<Envelope> &envelopes, qint64 row, const QString &station) {
+    QList<quint64> tags;
+    for (const Envelope &envelope : envelopes) {
+        const quint64 tag = m_sender.send(toAmqpMessage(envelope, m_codec));
+        if (tag == 0) { // the connection went meanwhile: it stays in the journal
+            for (const quint64 sent : tags)
+                m_inFlight.erase(sent);
+            return false;
+        }
+        tags.append(tag);
+        m_inFlight.emplace(tag, row);
+    }
+    if (envelopes.isEmpty())
+        return true;
+    m_unaccepted[row] += int(envelopes.size());
+    if (!station.isEmpty() && m_board && m_board->row() == row) {
+        m_board->unaccepted[station] += int(envelopes.size());
+        for (const quint64 tag : tags)
+            m_board->stationOfTag.insert(tag, station);
+    }
+    return true;
+}
+
 std::optional<QList<Envelope>> CfxForwarder::envelopesOf(const journal::StoredEvent &stored) {
-    if (stored.record.kind == journal::JournalEvent::Kind::ContextChange)
-        return boardEnvelopesOf(stored);
     if (const std::optional<Envelope> envelope = faultEnvelopeOf(stored))
         return QList<Envelope>{*envelope};
     return QList<Envelope>();
@@ -141,7 +168,8 @@ std::optional<Envelope> CfxForwarder::faultEnvelopeOf(const journal::StoredEvent
                            QDateTime::fromMSecsSinceEpoch(event.timeMs, Qt::UTC));
 }
 
-std::optional<QList<Envelope>> CfxForwarder::boardEnvelopesOf(const journal::StoredEvent &change) {
+std::optional<CfxForwarder::BoardChange>
+CfxForwarder::boardChangeOf(const journal::StoredEvent &change) {
     // The context changes before this one, newest first: the board they named last, and the
     // change that began naming it (its transaction).
     journal::EventFilter filter;
@@ -154,42 +182,44 @@ std::optional<QList<Envelope>> CfxForwarder::boardEnvelopesOf(const journal::Sto
         setProblem(earlier.error());
         return std::nullopt;
     }
-    QString before;
-    std::optional<journal::StoredEvent> began;
+    BoardChange board;
+    board.change = change;
     for (const journal::StoredEvent &event : *earlier) {
         if (event.id >= change.id)
             continue;
         const QString serial = boardNamedBy(event);
-        if (began && serial != before)
+        if (board.endedBegan && serial != board.ended)
             break;
-        before = serial;
-        began = event;
+        board.ended = serial;
+        board.endedBegan = event;
     }
-    const QString next = boardNamedBy(change);
-    if (next == before)
-        return QList<Envelope>(); // the same board: another operator or work order, or a program
-                                  // started again
+    // The same board named again: another operator or work order, or a program started again.
+    board.begun = boardNamedBy(change);
+    return board;
+}
 
-    const QList<model::DeviceIdentity> stations =
-        m_boards.stations ? m_boards.stations() : QList<model::DeviceIdentity>();
+std::optional<QList<Envelope>>
+CfxForwarder::stationEnvelopesOf(const BoardChange &board, const model::DeviceIdentity &station,
+                                 bool toldOfNext) {
+    const journal::StoredEvent &change = board.change;
+    const QString handle = m_handleOf(station);
     QList<Envelope> envelopes;
-    const auto add = [&](const Message &message, const model::DeviceIdentity &station,
-                         qint64 timeMs) {
-        const QString handle = m_handleOf(station);
+    const auto add = [&](const Message &message, qint64 timeMs) {
         envelopes.append(cfx::envelopeOf(
             message, handle,
             QUuid::createUuidV5(change.uid, QStringLiteral("%1/%2").arg(message.name, handle)),
             QDateTime::fromMSecsSinceEpoch(timeMs, Qt::UTC)));
     };
-    if (!before.isEmpty()) {
+    if (!board.ended.isEmpty()) {
         BoardWork work;
-        work.serial = before;
-        work.transaction = began->uid;
-        work.workOrder = began->context.workOrder;
-        work.startedMs = began->record.timeMs;
+        work.serial = board.ended;
+        work.transaction = board.endedBegan->uid;
+        work.workOrder = board.endedBegan->context.workOrder;
+        work.startedMs = board.endedBegan->record.timeMs;
         work.finishedMs = change.record.timeMs;
         journal::JointFilter filter;
-        filter.boardSerial = before;
+        filter.boardSerial = board.ended;
+        filter.deviceKey = station.key();
         filter.sinceMs = work.startedMs;
         filter.untilMs = work.finishedMs + 1;
         filter.order = journal::Order::OldestFirst;
@@ -198,55 +228,107 @@ std::optional<QList<Envelope>> CfxForwarder::boardEnvelopesOf(const journal::Sto
             setProblem(made.error());
             return std::nullopt;
         }
-        // Each station that was told of the board, and each that made joints on it.
-        QList<model::DeviceIdentity> workers = stations;
-        for (const journal::StoredJoint &joint : *made)
-            if (!workers.contains(joint.record.device))
-                workers.append(joint.record.device);
-        for (const model::DeviceIdentity &station : workers) {
-            BoardWork own = work;
-            for (const journal::StoredJoint &joint : *made)
-                if (joint.record.device == station)
-                    own.joints.append(joint);
-            if (!own.joints.isEmpty())
-                add(unitsProcessed(own), station, work.finishedMs);
-            add(workCompleted(own), station, work.finishedMs);
-        }
+        work.joints = *made;
+        if (!work.joints.isEmpty())
+            add(unitsProcessed(work), work.finishedMs);
+        add(workCompleted(work), work.finishedMs);
     }
-    if (!next.isEmpty()) {
+    if (!board.begun.isEmpty() && toldOfNext) {
         BoardWork work;
-        work.serial = next;
+        work.serial = board.begun;
         work.transaction = change.uid;
         work.workOrder = change.context.workOrder;
         work.startedMs = change.record.timeMs;
-        for (const model::DeviceIdentity &station : stations)
-            add(workStarted(work), station, work.startedMs);
+        add(workStarted(work), work.startedMs);
     }
     return envelopes;
 }
 
-bool CfxForwarder::boardReady(const journal::StoredEvent &change) {
-    if (!m_boards.settled)
-        return true;
+std::optional<bool> CfxForwarder::openBoard(const journal::StoredEvent &change) {
     const qint64 nowMs = QDateTime::currentMSecsSinceEpoch();
-    if (!m_waiting || m_waiting->row != change.id)
-        m_waiting = Waiting{change.id, nowMs, std::nullopt};
-    if (nowMs - m_waiting->sinceMs >= kBoardWaitMaxMs) {
-        qCWarning(lcCfxForwarder,
-                  "a board's messages waited %lld s for its last joints or stations: sent "
-                  "without what had not come",
-                  static_cast<long long>(kBoardWaitMaxMs / 1000));
-        m_waiting.reset();
-        return true;
+    if (!m_board || m_board->row() != change.id) {
+        const std::optional<BoardChange> board = boardChangeOf(change);
+        if (!board)
+            return std::nullopt;
+        if (!board->changesBoard()) {
+            markSoon(change.id);
+            return true;
+        }
+        m_board.emplace();
+        m_board->board = *board;
+        m_board->sinceMs = nowMs;
     }
-    if (!m_waiting->journalMark) {
-        if (!m_boards.settled(change.record.timeMs))
-            return false;
-        m_waiting->journalMark = m_journal.appendedMark();
-    }
-    if (!m_journal.dealtWith(*m_waiting->journalMark))
+    OpenBoard &open = *m_board;
+    if (open.stationsKnown)
+        return true; // read again after a lost connection: it is under way
+    const bool overdue = nowMs - open.sinceMs >= kBoardWaitMaxMs;
+    if (m_boards.known && !m_boards.known() && !overdue)
         return false;
-    m_waiting.reset();
+    open.stationsKnown = true;
+    open.told = m_boards.stations ? m_boards.stations() : QList<model::DeviceIdentity>();
+    open.workers = open.told;
+    if (!open.board.ended.isEmpty()) {
+        // Each station that made joints on the board ended, told of it or not.
+        journal::JointFilter filter;
+        filter.boardSerial = open.board.ended;
+        filter.sinceMs = open.board.endedBegan->record.timeMs;
+        filter.untilMs = change.record.timeMs + 1;
+        const auto made = m_reader.joints(filter);
+        if (!made) {
+            setProblem(made.error());
+            m_board.reset();
+            return std::nullopt;
+        }
+        for (const journal::StoredJoint &joint : *made)
+            if (!open.workers.contains(joint.record.device))
+                open.workers.append(joint.record.device);
+    }
+    open.waiting = open.workers;
+    return true;
+}
+
+bool CfxForwarder::advanceBoard() {
+    OpenBoard &open = *m_board;
+    const qint64 nowMs = QDateTime::currentMSecsSinceEpoch();
+    // Nothing to wait for when no board ended; a line that stays down must not hold the spool.
+    const bool overdue = nowMs - open.sinceMs >= kBoardWaitMaxMs;
+    const bool waitForJoints = !open.board.ended.isEmpty() && !overdue;
+    if (overdue && !open.waiting.isEmpty() && !std::exchange(open.overdueSaid, true))
+        qCWarning(lcCfxForwarder,
+                  "a board's messages waited %lld s for the last joints of %lld station(s): sent "
+                  "without what had not come",
+                  static_cast<long long>(kBoardWaitMaxMs / 1000),
+                  static_cast<long long>(open.waiting.size()));
+    for (qsizetype i = 0; i < open.waiting.size();) {
+        const model::DeviceIdentity station = open.waiting.at(i);
+        const QString key = station.key();
+        if (waitForJoints) {
+            auto mark = open.journalMarks.constFind(key);
+            if (mark == open.journalMarks.cend()) {
+                if (m_boards.settled &&
+                    !m_boards.settled(station, open.board.change.record.timeMs)) {
+                    ++i;
+                    continue;
+                }
+                mark = open.journalMarks.insert(key, m_journal.appendedMark());
+            }
+            if (!m_journal.dealtWith(*mark)) {
+                ++i;
+                continue;
+            }
+        }
+        const std::optional<QList<Envelope>> made =
+            stationEnvelopesOf(open.board, station, open.told.contains(station));
+        if (!made || !send(*made, open.row(), key))
+            return false;
+        open.waiting.removeAt(i);
+    }
+    if (!open.waiting.isEmpty())
+        return true;
+    // Every station's messages have left: the change is marked once the broker took them all.
+    if (!m_unaccepted.contains(open.row()))
+        markSoon(open.row());
+    m_board.reset();
     return true;
 }
 
@@ -281,9 +363,17 @@ void CfxForwarder::onAccepted(quint64 tag) {
     const qint64 row = it->second;
     m_inFlight.erase(it);
     ++m_accepted;
+    const bool boardOpen = m_board && m_board->row() == row;
+    if (boardOpen) {
+        const QString station = m_board->stationOfTag.take(tag);
+        if (const auto left = m_board->unaccepted.find(station);
+            left != m_board->unaccepted.end() && --*left == 0)
+            m_board->unaccepted.erase(left);
+    }
     if (const auto left = m_unaccepted.find(row); left != m_unaccepted.end() && --*left == 0) {
         m_unaccepted.erase(left);
-        markSoon(row);
+        if (!boardOpen) // an open board's change is marked when its last station's messages left
+            markSoon(row);
     }
     pumpSoon();
 }
@@ -303,6 +393,16 @@ void CfxForwarder::onLost() {
     m_inFlight.clear();
     m_unaccepted.clear();
     m_cursor = oldest;
+    // An open board's stations whose messages the broker took stay done; the others send theirs
+    // again, with the same UniqueIDs.
+    if (m_board) {
+        for (auto it = m_board->unaccepted.cbegin(); it != m_board->unaccepted.cend(); ++it)
+            for (const model::DeviceIdentity &station : std::as_const(m_board->workers))
+                if (station.key() == it.key() && !m_board->waiting.contains(station))
+                    m_board->waiting.append(station);
+        m_board->unaccepted.clear();
+        m_board->stationOfTag.clear();
+    }
     // Read again from the journal: what was raised before the cursor and not cleared is still
     // active, and the events after it are forwarded again.
     m_openFaults.clear();

@@ -21,13 +21,16 @@
 // messages, each with a UniqueID made from the event's id, its message and its station; the
 // event is marked sent when the broker accepted all of them.
 //
-// A board's messages wait (and the events after them) until its joints are all in the journal:
-// a joint begun before the change belongs to the board that ends (Journal::append) but is
-// journaled only once it ended, seconds later. Boards::settled says when the stations have
-// ended every joint begun before a time and are all known (after a restart, before its lines
-// found their stations, the board would reach only some of them); the journal then has to have
-// written what was appended until then. The wait ends after kBoardWaitMaxMs whatever: a line
-// that stays down must not hold the spool.
+// A station's board messages wait until its joints of the board are all in the journal: a joint
+// begun before the change belongs to the board that ends (Journal::append) but is journaled only
+// once it ended, seconds later. Boards::known says when the stations are all known (after a
+// restart, before its lines found their stations, the board would reach only some of them);
+// Boards::settled when one station has ended every joint it began before a time; the journal then
+// has to have written what was appended until then. Each station's messages leave once it has,
+// so a board change on many stations does not wait for the slowest: messages keep their order per
+// endpoint, not across endpoints. While a station waits, the events after the change that are
+// its own wait too, and so does the next board change; the others go on. The wait ends after
+// kBoardWaitMaxMs whatever: a line that stays down must not hold the spool.
 //
 // The journal and the sender must outlive the forwarder, and live on its thread.
 #pragma once
@@ -61,9 +64,11 @@ public:
         // The stations that work on the board the shared work context names (those on lines
         // without a context of their own).
         std::function<QList<model::DeviceIdentity>()> stations;
-        // True once those stations are all known and have ended every joint begun before the
-        // time given (ms since the epoch); none: at once.
-        std::function<bool(qint64 timeMs)> settled;
+        // True once those stations are all known; none: at once.
+        std::function<bool()> known;
+        // True once the station has ended every joint it began before the time given (ms since
+        // the epoch); none: at once.
+        std::function<bool(const model::DeviceIdentity &station, qint64 timeMs)> settled;
     };
     static constexpr int kWindow = 200;
     // The longest a board's messages wait for its last joints: a joint ends within
@@ -91,18 +96,38 @@ Q_SIGNALS:
 private:
     void pumpSoon();
     void pump();
-    // The messages an event becomes (none: it is marked at once), or nothing when the journal
-    // could not be read to make them.
+    void pumpEvents();
+    // The messages an event other than a context change becomes (none: it is marked at once),
+    // or nothing when the journal could not be read to make them.
     [[nodiscard]] std::optional<QList<Envelope>> envelopesOf(const journal::StoredEvent &event);
     [[nodiscard]] std::optional<Envelope> faultEnvelopeOf(const journal::StoredEvent &event);
+    // What a context change does to the board: the board it ends and the one it begins, empty
+    // when it names the same board again; nothing when the journal could not be read.
+    struct BoardChange {
+        journal::StoredEvent change;
+        QString ended;
+        std::optional<journal::StoredEvent> endedBegan; // the change that began naming it
+        QString begun;
+        [[nodiscard]] bool changesBoard() const { return ended != begun; }
+    };
+    [[nodiscard]] std::optional<BoardChange> boardChangeOf(const journal::StoredEvent &change);
+    // One station's messages of a board change: UnitsProcessed and WorkCompleted of the board
+    // that ended, WorkStarted of the next if the station was told of it.
     [[nodiscard]] std::optional<QList<Envelope>>
-    boardEnvelopesOf(const journal::StoredEvent &change);
+    stationEnvelopesOf(const BoardChange &board, const model::DeviceIdentity &station,
+                       bool toldOfNext);
     [[nodiscard]] QUuid raisingOccurrence(const journal::StoredEvent &cleared);
     void raised(const journal::StoredEvent &event);
     [[nodiscard]] bool recallOpenFaults();
-    // False while a context change must wait for its board's joints (then pump() is called
-    // again soon).
-    [[nodiscard]] bool boardReady(const journal::StoredEvent &change);
+    // Takes up a context change: false while it must wait for the stations to be known;
+    // nothing when the journal could not be read.
+    [[nodiscard]] std::optional<bool> openBoard(const journal::StoredEvent &change);
+    // Sends the messages of each station of the open board that has settled; false when the
+    // journal could not be read or the connection went.
+    [[nodiscard]] bool advanceBoard();
+    // False when the connection went meanwhile (what was handed over is forgotten).
+    [[nodiscard]] bool send(const QList<Envelope> &envelopes, qint64 row,
+                            const QString &station = QString());
     void markSoon(qint64 row);
     void onAccepted(quint64 tag);
     void onLost();
@@ -114,14 +139,23 @@ private:
     HandleOf m_handleOf;
     Codec m_codec;
     Boards m_boards;
-    // The context change waiting for its board's joints: its row, since when it waits, and the
-    // journal's mark once the stations had settled.
-    struct Waiting {
-        qint64 row = 0;
+    // The board change under way: since when, the stations whose messages have not left (or
+    // must leave again after a lost connection), the journal's mark taken when each settled, and
+    // each one's messages not yet accepted.
+    struct OpenBoard {
+        BoardChange board;
         qint64 sinceMs = 0;
-        std::optional<quint64> journalMark;
+        bool stationsKnown = false;
+        QList<model::DeviceIdentity> told;    // of the board it begins
+        QList<model::DeviceIdentity> workers; // told, and those that made joints on the one ended
+        QList<model::DeviceIdentity> waiting;
+        QHash<QString, quint64> journalMarks; // DeviceIdentity::key() → mark
+        QHash<QString, int> unaccepted;       // DeviceIdentity::key() → messages
+        QHash<quint64, QString> stationOfTag; // tag → DeviceIdentity::key()
+        bool overdueSaid = false;
+        [[nodiscard]] qint64 row() const { return board.change.id; }
     };
-    std::optional<Waiting> m_waiting;
+    std::optional<OpenBoard> m_board;
     QTimer m_waitTimer;
     journal::JournalReader m_reader;
     qint64 m_cursor = 0;

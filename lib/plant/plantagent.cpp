@@ -98,7 +98,10 @@ void PlantAgent::startCfx() {
         [this](const model::DeviceIdentity &device) { return cfxHandleOf(device); },
         [this] { return cfxEndpoints(); },
         cfx::CfxForwarder::Boards{[this] { return boardStations(); },
-                                  [this](qint64 timeMs) { return boardSettled(timeMs); }});
+                                  [this] { return boardStationsKnown(); },
+                                  [this](const model::DeviceIdentity &station, qint64 timeMs) {
+                                      return stationSettled(station, timeMs);
+                                  }});
     connect(m_cfx.get(), &cfx::CfxPublisher::stopped, this, [this] {
         m_cfx.release()->deleteLater(); // its own signal is still being emitted
         finishIfStopped();
@@ -166,7 +169,7 @@ QList<model::DeviceIdentity> PlantAgent::boardStations() {
     return stations;
 }
 
-bool PlantAgent::boardSettled(qint64 timeMs) {
+bool PlantAgent::boardStationsKnown() {
     model::Workspace &workspace = m_lines.workspace();
     for (int i = 0; i < workspace.count(); ++i) {
         if (workspace.line(i).ownContext())
@@ -174,10 +177,27 @@ bool PlantAgent::boardSettled(qint64 timeMs) {
         model::Session *session = workspace.session(i);
         // A line that has not found its stations yet (just started, or reconnecting) would
         // leave them out of the board.
-        if (!session || session->devices().isEmpty() || !session->joints().settledUntil(timeMs))
+        if (!session || session->devices().isEmpty())
             return false;
     }
     return true;
+}
+
+bool PlantAgent::stationSettled(const model::DeviceIdentity &station, qint64 timeMs) {
+    model::Workspace &workspace = m_lines.workspace();
+    bool everyLineFound = true;
+    for (int i = 0; i < workspace.count(); ++i) {
+        model::Session *session = workspace.session(i);
+        if (!session || session->devices().isEmpty()) {
+            everyLineFound = false;
+            continue;
+        }
+        for (const model::DeviceModel *device : session->devices())
+            if (device->identity() == station)
+                return session->joints().settledUntil(timeMs, station);
+    }
+    // Gone from every line: nothing of it is still to come, unless its line is finding it again.
+    return everyLineFound;
 }
 
 QList<cfx::EndpointIdentity> PlantAgent::cfxEndpoints() {

@@ -78,9 +78,11 @@ private:
     [[nodiscard]] QString cfxHandleOf(const model::DeviceIdentity &device);
     [[nodiscard]] QList<cfx::EndpointIdentity> cfxEndpoints();
     [[nodiscard]] QList<model::DeviceIdentity> boardStations();
-    // The stations of boardStations() are all known and have ended every joint begun before
-    // `timeMs`.
-    [[nodiscard]] bool boardSettled(qint64 timeMs);
+    // Every line that follows the shared work context has found its stations.
+    [[nodiscard]] bool boardStationsKnown();
+    // `station` has ended every joint it began before `timeMs`; a station no line has now, once
+    // every line has found its stations (its own may be finding it again).
+    [[nodiscard]] bool stationSettled(const model::DeviceIdentity &station, qint64 timeMs);
     void finishIfStopped();
 
     Publisher m_who;

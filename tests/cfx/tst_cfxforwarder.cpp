@@ -241,7 +241,7 @@ private Q_SLOTS:
                 consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), kMessages),
                 qPrintable(consumer.output()));
             AmqpSender sender;
-            CfxForwarder forwarder(journal, sender, handleOf, Codec::Gzip, {stations, {}});
+            CfxForwarder forwarder(journal, sender, handleOf, Codec::Gzip, {stations, {}, {}});
             sender.start(
                 testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic")));
             QVERIFY2(consumer.finish(), qPrintable(consumer.output()));
@@ -254,15 +254,16 @@ private Q_SLOTS:
                 runIds << envelope.value(QStringLiteral("UniqueID")).toString();
             }
             const QString a = handleOf(soldering), b = handleOf(idle);
+            // A board change's messages leave station by station, in order at each.
             QCOMPARE(names, (QStringList{"WorkStarted", "WorkStarted", "UnitsProcessed",
-                                         "WorkCompleted", "WorkCompleted", "WorkStarted",
+                                         "WorkCompleted", "WorkStarted", "WorkCompleted",
                                          "WorkStarted", "WorkCompleted", "WorkCompleted"}));
-            QCOMPARE(sources, (QStringList{a, b, a, a, b, a, b, a, b}));
+            QCOMPARE(sources, (QStringList{a, b, a, a, a, b, b, a, b}));
             QTRY_COMPARE_WITH_TIMEOUT(unsentCount(path), qint64(0), 20000);
 
             // SN-1: one transaction, the id of the change that began it, at both stations.
             const QString transaction = began.toString(QUuid::WithoutBraces);
-            for (int i : {0, 1, 3, 4})
+            for (int i : {0, 1, 3, 5})
                 QCOMPARE(bodyField(envelopeAt(consumer, i), QStringLiteral("TransactionID")),
                          transaction);
             const QJsonObject processed =
@@ -278,9 +279,9 @@ private Q_SLOTS:
                      3);
             QCOMPARE(bodyField(envelopeAt(consumer, 3), QStringLiteral("Result")),
                      QStringLiteral("Completed"));
-            QCOMPARE(bodyField(envelopeAt(consumer, 4), QStringLiteral("Result")),
+            QCOMPARE(bodyField(envelopeAt(consumer, 5), QStringLiteral("Result")),
                      QStringLiteral("Skipped"));
-            QCOMPARE(bodyField(envelopeAt(consumer, 5), QStringLiteral("PrimaryIdentifier")),
+            QCOMPARE(bodyField(envelopeAt(consumer, 4), QStringLiteral("PrimaryIdentifier")),
                      QStringLiteral("SN-2"));
             QCOMPARE(bodyField(envelopeAt(consumer, 7), QStringLiteral("TransactionID")),
                      next.toString(QUuid::WithoutBraces));
@@ -310,7 +311,8 @@ private Q_SLOTS:
         bool settled = true;
         qint64 askedAboutMs = 0;
         const CfxForwarder::Boards boards{[&] { return QList<model::DeviceIdentity>{station}; },
-                                          [&](qint64 timeMs) {
+                                          {},
+                                          [&](const model::DeviceIdentity &, qint64 timeMs) {
                                               askedAboutMs = timeMs;
                                               return settled;
                                           }};
@@ -364,6 +366,82 @@ private Q_SLOTS:
         const auto onBoardA = reader.countJoints(onA);
         QVERIFY(onBoardA);
         QCOMPARE(*onBoardA, qint64(1));
+    }
+
+    // A board change on two stations, one of them still in a joint: the other's messages leave
+    // at once, and so do its events after the change; the busy one's wait for its joint, and its
+    // own events after the change wait behind them. At each endpoint, the journal's order.
+    void eachStationsBoardLeavesOnceItsOwnJointsHaveEnded() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+        journal::Journal journal(path, testing::quickOptions());
+        QVERIFY(testing::waitOpened(journal));
+        const model::DeviceIdentity quick = testing::sampleDevice(1);
+        const model::DeviceIdentity busy = testing::sampleDevice(0); // portEvent()'s device
+        bool busySettled = true;
+        int knownAsked = 0;
+        const CfxForwarder::Boards boards{[&] {
+                                              return QList<model::DeviceIdentity>{busy, quick};
+                                          },
+                                          [&] {
+                                              ++knownAsked;
+                                              return true;
+                                          },
+                                          [&](const model::DeviceIdentity &station, qint64) {
+                                              return station == quick || busySettled;
+                                          }};
+        const model::WorkContext none;
+        const model::WorkContext boardA{QString(), QStringLiteral("SN-A"), QString()};
+        const model::WorkContext boardB{QString(), QStringLiteral("SN-B"), QString()};
+        journal.append(contextChange(none, boardA, testing::kT0), boardA);
+
+        CfxConsumer consumer;
+        QVERIFY2(consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), 10),
+                 qPrintable(consumer.output()));
+        AmqpSender sender;
+        CfxForwarder forwarder(journal, sender, handleOf, Codec::Raw, boards);
+        sender.start(
+            testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic")));
+        QVERIFY2(consumer.waitForMessages(2), qPrintable(consumer.output()));
+
+        busySettled = false; // a joint under way at the change
+        journal.append(testing::sampleJoint(0, testing::kT0 + 1000, 1, 1), boardA);
+        journal.append(contextChange(boardA, boardB, testing::kT0 + 5000), boardB);
+        JournalEvent quickFault = portEvent(JournalEvent::Kind::PortError,
+                                            JournalEvent::Severity::Error, 2, testing::kT0 + 6000);
+        quickFault.device = quick;
+        journal.append(quickFault, boardB);
+        journal.append(portEvent(JournalEvent::Kind::PortError, JournalEvent::Severity::Error, 1,
+                                 testing::kT0 + 7000),
+                       boardB);
+        // The quick station's board messages and its fault, and no more while the other is busy
+        // (a send takes well under 500 ms on this broker).
+        QVERIFY2(consumer.waitForMessages(2 + 3 + 1), qPrintable(consumer.output()));
+        QTest::qWait(1000);
+        QCOMPARE(consumer.messages().size(), 2 + 3 + 1);
+        QCOMPARE(unsentCount(path), qint64(2)); // the change, and the busy station's fault
+
+        // Ended after the change, begun before it: SN-A's.
+        journal.append(testing::sampleJoint(1, testing::kT0 + 4000), boardA);
+        busySettled = true;
+        QVERIFY2(consumer.finish(), qPrintable(consumer.output()));
+        QVERIFY2(consumer.complaints().isEmpty(), qPrintable(consumer.complaints().join('\n')));
+        QVERIFY(knownAsked > 0);
+        QStringList atQuick, atBusy;
+        for (int i = 0; i < consumer.messages().size(); ++i) {
+            const QJsonObject envelope = envelopeAt(consumer, i);
+            const QString name =
+                envelope.value(QStringLiteral("MessageName")).toString().section('.', -1);
+            const QString source = envelope.value(QStringLiteral("Source")).toString();
+            (source == handleOf(quick) ? atQuick : atBusy) << name;
+            if (i >= 2 && i < 6)
+                QCOMPARE(source, handleOf(quick));
+        }
+        QCOMPARE(atQuick, (QStringList{"WorkStarted", "UnitsProcessed", "WorkCompleted",
+                                       "WorkStarted", "FaultOccurred"}));
+        QCOMPARE(atBusy, (QStringList{"WorkStarted", "UnitsProcessed", "WorkCompleted",
+                                      "WorkStarted", "FaultOccurred"}));
+        QTRY_COMPARE_WITH_TIMEOUT(unsentCount(path), qint64(0), 20000);
     }
 };
 

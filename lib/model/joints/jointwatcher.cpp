@@ -6,6 +6,7 @@
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <algorithm>
 
 namespace tipscope::model {
 
@@ -128,14 +129,26 @@ QString JointWatcher::warningText(const JointRecord &joint, const JointLimits &l
     return {};
 }
 
+namespace {
+template <typename Watched> bool portSettledUntil(const Watched &w, qint64 timeMs) {
+    if (w.fedUntilMs < timeMs)
+        return false;
+    const std::optional<qint64> since = w.detector.openSinceMs();
+    return !since || *since >= timeMs;
+}
+} // namespace
+
 bool JointWatcher::settledUntil(qint64 timeMs) const {
-    for (const auto &[key, w] : m_watched) {
-        if (w.fedUntilMs < timeMs)
-            return false;
-        if (const std::optional<qint64> since = w.detector.openSinceMs(); since && *since < timeMs)
-            return false;
-    }
-    return true;
+    return std::all_of(m_watched.begin(), m_watched.end(), [timeMs](const auto &watched) {
+        return portSettledUntil(watched.second, timeMs);
+    });
+}
+
+bool JointWatcher::settledUntil(qint64 timeMs, const DeviceIdentity &device) const {
+    return std::all_of(m_watched.begin(), m_watched.end(), [&](const auto &watched) {
+        return !(watched.second.channel.device == device) ||
+               portSettledUntil(watched.second, timeMs);
+    });
 }
 
 } // namespace tipscope::model

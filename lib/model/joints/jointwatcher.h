@@ -51,6 +51,8 @@ public:
     // fed readings up to `timeMs` and has no joint open that began before it. A port whose
     // readings stopped coming is not settled until they come again or its gap ends its joint.
     [[nodiscard]] bool settledUntil(qint64 timeMs) const;
+    // The same for the ports of `device` alone: one station's board need not wait for another's.
+    [[nodiscard]] bool settledUntil(qint64 timeMs, const DeviceIdentity &device) const;
 
     // A joint's limits broken, in words for the event log ("port 1 joint: recovery 4.2 s,
     // limit 3.0 s"); empty for a joint within them or not judged.

@@ -28,6 +28,7 @@ class TestJointWatcher : public QObject {
 private Q_SLOTS:
     void theDemoStationsJointsAreFoundMeasuredAndJudged();
     void settledOnceReadPastAMomentWithNoJointBegunBefore();
+    void oneStationsOpenJointLeavesAnotherSettled();
 };
 
 void TestJointWatcher::theDemoStationsJointsAreFoundMeasuredAndJudged() {
@@ -111,6 +112,48 @@ void TestJointWatcher::settledOnceReadPastAMomentWithNoJointBegunBefore() {
         read(350, 20);
     QCOMPARE(joints.size(), 1);
     QVERIFY(watcher.settledUntil(dipMs + 100));
+}
+
+// Two stations on one line, read side by side: a joint under way on the first keeps the line
+// and that station unsettled, not the second, whose board may end at once.
+void TestJointWatcher::oneStationsOpenJointLeavesAnotherSettled() {
+    Telemetry telemetry;
+    JointWatcher watcher(telemetry);
+    QObject owner;
+    const DeviceIdentity working{QStringLiteral("line"), 1, QStringLiteral("DME-2C"),
+                                 QStringLiteral("9996780")};
+    const DeviceIdentity resting{QStringLiteral("line"), 2, QStringLiteral("DDE-2C"),
+                                 QStringLiteral("9996780")};
+    const DeviceIdentity elsewhere{QStringLiteral("other"), 1, QStringLiteral("DME-2C"),
+                                   QStringLiteral("9996780")};
+    const QList<TelemetryKey> keys{QStringLiteral("line/01/port1"),
+                                   QStringLiteral("line/02/port1")};
+    for (const TelemetryKey &key : keys)
+        (void)telemetry.ensureBuffer(key, {QStringLiteral("tip"), QStringLiteral("setpoint"),
+                                           QStringLiteral("power"), QStringLiteral("status")});
+    const auto tool = [] { return QStringLiteral("T245"); };
+    watcher.watch(&owner, keys[0], {working, 1, tool, 0.1});
+    watcher.watch(&owner, keys[1], {resting, 1, tool, 0.1});
+    constexpr qint64 kT0 = 1'700'000'000'000;
+    qint64 t = kT0;
+    const auto read = [&](int workingTip) {
+        (void)telemetry.append(keys[0], t, {workingTip, 350, 500, 0});
+        (void)telemetry.append(keys[1], t, {350, 350, 100, 0});
+        telemetry.notifyNow();
+        t += 100;
+    };
+    for (int i = 0; i < 40; ++i)
+        read(350);
+    const qint64 dipMs = t;
+    for (int tip : {330, 320, 325, 332})
+        read(tip);
+    QVERIFY(!watcher.settledUntil(dipMs + 100));
+    QVERIFY(!watcher.settledUntil(dipMs + 100, working));
+    QVERIFY(watcher.settledUntil(dipMs + 100, resting));
+    // A device the watcher has no port of holds nothing up.
+    QVERIFY(watcher.settledUntil(dipMs + 100, elsewhere));
+    // Neither is settled past what it was read until.
+    QVERIFY(!watcher.settledUntil(t + 500, resting));
 }
 
 TIPSCOPE_TEST_GUILESS_MAIN(TestJointWatcher)
