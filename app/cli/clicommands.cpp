@@ -2,11 +2,13 @@
 
 #include "cliunits.h"
 #include "model/displayunits.h"
+#include "model/writeproof.h"
 #include "protocol/elide.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 #include "protocol/valuecodec.h"
 
+#include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -133,32 +135,41 @@ int runRead(CliSession &s) {
     return worst;
 }
 
+// The write proved as the window proves it (model::WriteProof): read back, and read once more
+// when the first answer may be a late one from before the write.
 static int verifyWrite(CliSession &s, const DeviceInfo &d, const ResolvedCommand &cmd,
                        const QByteArray &data) {
     const auto readCmd = Catalog::builtin().resolve(d.family, cmd.code, Direction::Read);
-    if (!readCmd || cmd.spec->kind == ValueKind::Flags || cmd.spec->kind == ValueKind::Action) {
+    if (!readCmd || cmd.spec->kind == ValueKind::Action) {
         s.out() << CliCommandsTr::tr("%1 written").arg(QString::fromLatin1(cmd.code)) << Qt::endl;
         return kOk;
     }
-    Reply *back = s.ask(Request::read(d.address, *readCmd));
-    if (!back->ok()) {
+    model::WriteProof::Result proved;
+    QEventLoop loop;
+    model::WriteProof *proof =
+        model::WriteProof::start(s.line().queue(), d.address, *readCmd, data);
+    QObject::connect(proof, &model::WriteProof::finished, &loop,
+                     [&](const model::WriteProof::Result &r) {
+                         proved = r;
+                         loop.quit();
+                     });
+    loop.exec();
+    if (proved.error != ReplyError::None) {
         s.err() << CliCommandsTr::tr("tipscope-cli: %1 was accepted but could not be read back: %2")
-                       .arg(QString::fromLatin1(cmd.code), back->errorString())
+                       .arg(QString::fromLatin1(cmd.code), proved.errorString)
                 << Qt::endl;
-        return CliSession::exitCodeFor(*back);
+        return CliSession::exitCodeFor(proved.error);
     }
-    const auto wrote = decodeAnswer(*readCmd, data);
-    const auto now = decodeAnswer(*readCmd, back->answer().data);
-    if (!wrote || !now || !(*wrote == *now)) {
+    if (!proved.confirmed) {
         s.err() << CliCommandsTr::tr(
                        "tipscope-cli: verification failed: wrote %1, the device reports %2")
-                       .arg(QString::fromLatin1(data), QString::fromLatin1(back->answer().data))
+                       .arg(QString::fromLatin1(data), QString::fromLatin1(proved.reported))
                 << Qt::endl;
         return kNak;
     }
-    s.out() << CliCommandsTr::tr("%1 (verified)")
-                   .arg(formatReading(*readCmd, back->answer().data, false))
-            << Qt::endl;
+    s.out()
+        << CliCommandsTr::tr("%1 (verified)").arg(formatReading(*readCmd, proved.reported, false))
+        << Qt::endl;
     return kOk;
 }
 

@@ -2,6 +2,7 @@
 
 #include "devicemodel.h"
 #include "settingname.h"
+#include "writeproof.h"
 
 #include <QCoreApplication>
 #include <QTimer>
@@ -16,16 +17,6 @@ struct ParameterTr {
     Q_DECLARE_TR_FUNCTIONS(Parameter)
 };
 constexpr double kRateSmoothing = 0.2;
-
-// Whether a read-back proves a write. Flags are compared digit by digit, and a port sent to the
-// stand may already have moved on to sleep or hibernation by the time it is read back.
-bool confirms(const ResolvedCommand &cmd, const Value &written, const Value &read) {
-    if (cmd.spec->kind != ValueKind::Flags || written.isText || read.isText)
-        return written == read;
-    const qint64 w = written.number, r = read.number;
-    const bool modeOk = (w % 10 == 0) ? r % 10 == 0 : r % 10 >= w % 10;
-    return modeOk && (w / 10) % 10 == (r / 10) % 10;
-}
 } // namespace
 
 Parameter::Parameter(DeviceModel &device, std::optional<ResolvedCommand> read,
@@ -271,7 +262,7 @@ quint64 Parameter::apply() {
             return;
         }
         if (m_read) {
-            readBack(data, id, false);
+            readBack(data, id);
             return;
         }
         m_edit.reset();
@@ -281,27 +272,18 @@ quint64 Parameter::apply() {
     return id;
 }
 
-void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
-    Reply *reply = m_device.queue().enqueue(Request::read(m_device.address(), *m_read), this);
-    connect(reply, &Reply::finished, this, [this, reply, written, id, again] {
-        reply->deleteLater();
-        if (!reply->ok()) {
-            const ReplyError e = reply->error();
-            fail(ParameterTr::tr("written, but the read-back failed: %1").arg(reply->errorString()),
-                 id, e == ReplyError::NotOpen || e == ReplyError::Disconnected);
+void Parameter::readBack(const QByteArray &written, quint64 id) {
+    WriteProof *proof =
+        WriteProof::start(m_device.queue(), m_device.address(), *m_read, written, this);
+    connect(proof, &WriteProof::finished, this, [this, written, id](const WriteProof::Result &r) {
+        if (r.error != ReplyError::None) {
+            fail(ParameterTr::tr("written, but the read-back failed: %1").arg(r.errorString), id,
+                 r.error == ReplyError::NotOpen || r.error == ReplyError::Disconnected);
             return;
         }
         const auto wrote = decodeAnswer(*m_read, written);
-        const auto read = decodeAnswer(*m_read, reply->answer().data);
-        if (!again && wrote && read && !confirms(*m_read, *wrote, *read)) {
-            // Frames carry no sequence number: this may be the late answer of an earlier read of
-            // the code, from before the write. Read once more, after such an answer's window.
-            m_device.queue().holdForLateAnswer(m_device.address(), code());
-            readBack(written, id, true);
-            return;
-        }
-        deviceReported(reply->answer().data, double(reply->answerAgeUs()) / 1000);
-        if (!wrote || !m_value || !confirms(*m_read, *wrote, *m_value)) {
+        deviceReported(r.reported, r.ageMs);
+        if (!r.confirmed) {
             fail(ParameterTr::tr("the device reports %1 after %2 was written")
                      .arg(displayText(), formatValue(*m_read, wrote.value_or(Value()),
                                                      m_device.temperatureUnit())),

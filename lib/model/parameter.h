@@ -3,9 +3,8 @@
 // It holds the value as last read, a pending edit, and a state (Unknown, Reading, InSync, Edited,
 // Writing, Failed with the reason). There are two write paths, as in QGroundControl's Fact:
 // setEdit() + apply() is a person's edit, validated before anything reaches the wire, written,
-// and proved by a read-back (only then InSync); deviceReported() is the device's own value from
-// a poll and only updates what is shown. A read-back that differs is read once more, after the
-// window in which a late answer to an earlier read could still arrive, before the write fails.
+// and proved by a read-back (WriteProof, only then InSync); deviceReported() is the device's own
+// value from a poll and only updates what is shown.
 // Limits that depend on the device (the selected temperature between MIT and MAT) follow the
 // current values of the limiting parameters.
 #pragma once
@@ -111,7 +110,7 @@ Q_SIGNALS:
 private:
     void setState(State s, const QString &failure = {});
     // `again`: the first read-back differed and this is the one more read that decides.
-    void readBack(const QByteArray &written, quint64 id, bool again);
+    void readBack(const QByteArray &written, quint64 id);
     void succeed(quint64 id);
     // `byLine`: the line was down, so the failure ends when it is back (Session clears it).
     void fail(const QString &reason, quint64 id, bool byLine = false);
