@@ -5,6 +5,7 @@
 
 #include "link/line.h"
 #include "model/joints/jointlimitrules.h"
+#include "model/session.h"
 #include "model/workcontext.h"
 #include "protocol/outcome.h"
 
@@ -32,7 +33,8 @@ enum ExitCode {
 };
 
 struct CliOptions {
-    enum class Addressing { Auto, With, Without };
+    // The session's own: `--addr` and `--no-addr` ask what a workspace line's settings ask.
+    using Addressing = model::Session::Addressing;
 
     link::LineSettings line;
     bool demo = false;

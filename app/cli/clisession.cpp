@@ -198,10 +198,7 @@ std::unique_ptr<model::DeviceModel> CliSession::model(const DeviceInfo &device) 
 model::Session::Settings sessionSettingsOf(const CliOptions &o) {
     model::Session::Settings s;
     s.line = o.line;
-    s.addressing = o.addressing == CliOptions::Addressing::With ? model::Session::Addressing::With
-                   : o.addressing == CliOptions::Addressing::Without
-                       ? model::Session::Addressing::Without
-                       : model::Session::Addressing::Auto;
+    s.addressing = o.addressing;
     s.targetAddress = o.targetAddress;
     s.scanAllAddresses = o.flags.contains(QStringLiteral("scan"));
     s.demoActivity = o.demoActivity;

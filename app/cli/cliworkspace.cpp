@@ -28,7 +28,7 @@ CliOptions optionsFor(const CliOptions &o, const model::WorkspaceLine &line) {
     l.lineName = line.name;
     l.line = line.session.line;
     l.demo = l.demoActivity = line.session.line.kind == link::LineSettings::Kind::Demo;
-    l.addressing = CliOptions::Addressing(int(line.session.addressing));
+    l.addressing = line.session.addressing;
     l.targetAddress = line.session.targetAddress;
     if (line.session.scanAllAddresses && !l.flags.contains(QStringLiteral("scan")))
         l.flags.append(QStringLiteral("scan"));

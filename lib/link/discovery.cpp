@@ -49,19 +49,16 @@ Discovery::Discovery(RequestQueue &queue, QObject *parent)
 void Discovery::start() {
     const Catalog &cat = Catalog::builtin();
     QList<std::optional<int>> probes;
-    if (m_mode != Mode::Unaddressed) {
-        const QList<int> factory = {cat.address(QStringLiteral("station")),
-                                    cat.address(QStringLiteral("feeder")),
-                                    cat.address(QStringLiteral("extractor"))};
-        for (int a : factory)
-            probes.append(a);
-        if (m_scanAll)
-            for (int a = 0; a <= kMaxAddress; ++a)
-                if (!factory.contains(a) && a != m_queue.settings().robotAddress)
-                    probes.append(a);
-    }
-    if (m_mode != Mode::Addressed)
-        probes.append(std::nullopt);
+    const QList<int> factory = {cat.address(QStringLiteral("station")),
+                                cat.address(QStringLiteral("feeder")),
+                                cat.address(QStringLiteral("extractor"))};
+    for (int a : factory)
+        probes.append(a);
+    if (m_scanAll)
+        for (int a = 0; a <= kMaxAddress; ++a)
+            if (!factory.contains(a) && a != m_queue.settings().robotAddress)
+                probes.append(a);
+    probes.append(std::nullopt);
     m_named = false;
     begin(int(probes.size()));
     m_tap = connect(&m_queue.tap(), &FrameTap::event, this, &Discovery::onTap);

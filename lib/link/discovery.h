@@ -1,9 +1,9 @@
 // Discovery: finds the devices on a line and identifies them; the one place that does.
 //
-// start() searches: in addressed mode it probes the factory addresses first (station 01, feeder
-// 10, extractor 20) and, when asked, every other address 00-99; in the mode without addresses it
-// sends one probe without addresses; Auto does both. identify() asks one named device (any
-// address, or the device without addresses) and reports why it could not be identified. Each
+// start() searches both ways: it probes the factory addresses (station 01, feeder 10, extractor
+// 20) and, when asked, every other address 00-99, and sends one probe without addresses.
+// identify() asks one named device (any address, or the device without addresses; what a line
+// set to one way of addressing asks) and reports why it could not be identified. Each
 // probe asks the catalog's model-name command (R-SMN); a device that answers is identified by the
 // family its model name starts with, and asked for its software version (R-SVR) where its family
 // has that command. A search probe is tried twice and its silence is normal; identify() asks as
@@ -70,12 +70,10 @@ using Identification = protocol::Outcome<DeviceInfo, IdentifyFailure>;
 class Discovery : public QObject {
     Q_OBJECT
 public:
-    enum class Mode { Auto, Addressed, Unaddressed };
     static constexpr int kNamedDeviceTurnaroundMs = 500;
 
     explicit Discovery(RequestQueue &queue, QObject *parent = nullptr);
 
-    void setMode(Mode mode) { m_mode = mode; }
     void setScanAllAddresses(bool on) { m_scanAll = on; }
     void start();
     // Identifies the one device at `address` (nullopt: the device without addresses). On
@@ -114,7 +112,6 @@ private:
     void askAgain(int address);
 
     RequestQueue &m_queue;
-    Mode m_mode = Mode::Auto;
     bool m_scanAll = false;
     QList<std::optional<DeviceInfo>> m_found; // by probe slot, to keep probe order
     int m_outstanding = 0;

@@ -158,7 +158,6 @@ bool detectPhase(const Options &o) {
     qsizetype devices = -1;
     for (int run = 0; run < kDetectRuns; ++run) {
         Discovery discovery(link.queue());
-        discovery.setMode(Discovery::Mode::Auto);
         QEventLoop wait;
         bool finished = false;
         QObject::connect(&discovery, &Discovery::finished, &wait, [&] {

@@ -74,8 +74,8 @@ private Q_SLOTS:
     void demoLineIsTwoIdentifiedDevicesInProbeOrder();
     void ddrLineIsOneDeviceWithoutAddress();
     void aSearchFindsTheDevicesWhoseAnswersCameLate();
-    void modeDecidesWhichDevicesAreFound_data();
-    void modeDecidesWhichDevicesAreFound();
+    void aSearchAsksBothWays_data();
+    void aSearchAsksBothWays();
     void identifyNamesTheDeviceAtAnyAddress_data();
     void identifyNamesTheDeviceAtAnyAddress();
     void identifySaysWhyTheDeviceWasNotIdentified_data();
@@ -125,7 +125,6 @@ void TestDiscovery::aSearchFindsTheDevicesWhoseAnswersCameLate() {
     b.line->open();
     QTRY_COMPARE_WITH_TIMEOUT(b.line->state(), Line::State::Open, kWaitMs);
     Discovery discovery(b.line->queue());
-    discovery.setMode(Discovery::Mode::Addressed);
     QSignalSpy finished(&discovery, &Discovery::finished);
     QVERIFY(finished.isValid());
 
@@ -157,25 +156,18 @@ void TestDiscovery::ddrLineIsOneDeviceWithoutAddress() {
     QCOMPARE(devices[0].family, QStringLiteral("DDR"));
 }
 
-void TestDiscovery::modeDecidesWhichDevicesAreFound_data() {
+// The factory addresses (station, feeder, extractor) and the device without addresses: four
+// probes, whichever way the line's devices answer.
+void TestDiscovery::aSearchAsksBothWays_data() {
     QTest::addColumn<int>("wiring");
-    QTest::addColumn<int>("mode");
     QTest::addColumn<QString>("expected"); // addresses in probe order
     QTest::addColumn<int>("probes");
-
-    const int demo = int(Wiring::Demo);
-    const int ddr = int(Wiring::Ddr);
-    QTest::newRow("demo, auto") << demo << int(Discovery::Mode::Auto) << "01 10" << 4;
-    QTest::newRow("demo, addressed") << demo << int(Discovery::Mode::Addressed) << "01 10" << 3;
-    QTest::newRow("demo, unaddressed") << demo << int(Discovery::Mode::Unaddressed) << "" << 1;
-    QTest::newRow("ddr, auto") << ddr << int(Discovery::Mode::Auto) << "--" << 4;
-    QTest::newRow("ddr, addressed") << ddr << int(Discovery::Mode::Addressed) << "" << 3;
-    QTest::newRow("ddr, unaddressed") << ddr << int(Discovery::Mode::Unaddressed) << "--" << 1;
+    QTest::newRow("demo") << int(Wiring::Demo) << "01 10" << 4;
+    QTest::newRow("ddr") << int(Wiring::Ddr) << "--" << 4;
 }
 
-void TestDiscovery::modeDecidesWhichDevicesAreFound() {
+void TestDiscovery::aSearchAsksBothWays() {
     QFETCH(int, wiring);
-    QFETCH(int, mode);
     QFETCH(QString, expected);
     QFETCH(int, probes);
 
@@ -183,7 +175,6 @@ void TestDiscovery::modeDecidesWhichDevicesAreFound() {
     b.line->open();
     QTRY_COMPARE_WITH_TIMEOUT(b.line->state(), Line::State::Open, kWaitMs);
     Discovery discovery(b.line->queue());
-    discovery.setMode(Discovery::Mode(mode));
     QSignalSpy progress(&discovery, &Discovery::progress);
     QVERIFY(progress.isValid());
     QSignalSpy finished(&discovery, &Discovery::finished);
