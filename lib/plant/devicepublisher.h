@@ -19,6 +19,7 @@
 
 #include "agentconfig.h"
 #include "plantpayloads.h"
+#include "planttopics.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -37,13 +38,6 @@ class MqttClient;
 }
 
 namespace tipscope::plant {
-
-struct DevicePlace {
-    QString line;   // the workspace line's name
-    QString name;   // the name the workspace gives the device, or empty
-    QString root;   // its topic root
-    QString client; // the presence client's id
-};
 
 class DevicePublisher : public QObject {
     Q_OBJECT

@@ -87,7 +87,7 @@ void JournalForwarder::pump() {
                 (j < joints->size() && joints->at(j).record.endMs <= events->at(e).record.timeMs);
             if (takeJoint) {
                 const journal::StoredJoint &joint = joints->at(j++);
-                const Place place = m_placeOf(joint.record.device);
+                const DevicePlace place = m_placeOf(joint.record.device);
                 QJsonObject payload = journal::jointJson(joint);
                 payload.insert(QStringLiteral("line"), place.line);
                 payload.insert(QStringLiteral("connection"), joint.record.device.line);
@@ -96,7 +96,7 @@ void JournalForwarder::pump() {
                 m_jointCursor = joint.id;
             } else {
                 const journal::StoredEvent &event = events->at(e++);
-                const Place place = m_placeOf(event.record.device);
+                const DevicePlace place = m_placeOf(event.record.device);
                 QJsonObject payload = eventPayload(event);
                 payload.insert(QStringLiteral("line"), place.line);
                 payload.insert(QStringLiteral("connection"), event.record.device.line);

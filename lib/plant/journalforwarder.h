@@ -15,6 +15,8 @@
 // Both the journal and the client must outlive the forwarder, and live on its thread.
 #pragma once
 
+#include "planttopics.h"
+
 #include "journal/journalreader.h"
 
 #include <QElapsedTimer>
@@ -37,11 +39,7 @@ class JournalForwarder : public QObject {
 public:
     // Where a record of `device` goes: its root topic (an agent's root for an empty identity)
     // and the name of the workspace line it is on (empty when none).
-    struct Place {
-        QString root;
-        QString line;
-    };
-    using PlaceOf = std::function<Place(const model::DeviceIdentity &device)>;
+    using PlaceOf = std::function<DevicePlace(const model::DeviceIdentity &device)>;
     static constexpr int kWindow = 200;
 
     JournalForwarder(journal::Journal &journal, mqtt::MqttClient &client, PlaceOf placeOf,

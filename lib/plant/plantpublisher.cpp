@@ -142,25 +142,20 @@ void PlantPublisher::syncLine(int index) {
 
 void PlantPublisher::addDevice(int index, model::DeviceModel &device) {
     const model::WorkspaceLine &line = m_workspace.line(index);
-    DevicePlace place;
-    place.line = line.name;
-    place.name = line.deviceName(device.address());
-    const QString level = deviceLevel(place.name, device.address(), device.family());
-    place.root = deviceRoot(m_config.site, line.name, level);
-    place.client =
-        QStringLiteral("%1-%2-%3").arg(m_agentId, mqtt::sanitizeTopicLevel(line.name), level);
-    auto publisher =
-        std::make_unique<DevicePublisher>(*m_client, m_config, m_who, device, std::move(place));
+    auto publisher = std::make_unique<DevicePublisher>(
+        *m_client, m_config, m_who, device,
+        devicePlace(m_config.site, m_agentId, line.name, line.deviceName(device.address()),
+                    device.address(), device.family()));
     connect(publisher.get(), &DevicePublisher::offline, this, &PlantPublisher::onOffline);
     m_devices.push_back(std::move(publisher));
 }
 
-JournalForwarder::Place PlantPublisher::placeOf(const model::DeviceIdentity &identity) const {
+DevicePlace PlantPublisher::placeOf(const model::DeviceIdentity &identity) const {
     if (identity.isEmpty())
-        return {agentRoot(m_config.site, m_agentId), QString()};
+        return agentPlace(m_config.site, m_agentId);
     for (const auto &d : m_devices)
         if (d->device() && d->device()->identity() == identity)
-            return {d->place().root, d->place().line};
+            return d->place();
     // A device this run has not found (yet): its line is the one reached the same way.
     QString line = identity.line;
     QString name;
@@ -168,8 +163,8 @@ JournalForwarder::Place PlantPublisher::placeOf(const model::DeviceIdentity &ide
         line = m_workspace.line(i).name;
         name = m_workspace.line(i).deviceName(identity.address);
     }
-    const QString family = protocol::Catalog::builtin().familyForModel(identity.model);
-    return {deviceRoot(m_config.site, line, deviceLevel(name, identity.address, family)), line};
+    return devicePlace(m_config.site, m_agentId, line, name, identity.address,
+                       protocol::Catalog::builtin().familyForModel(identity.model));
 }
 
 } // namespace tipscope::plant

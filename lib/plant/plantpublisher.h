@@ -46,7 +46,7 @@ public:
     }
     [[nodiscard]] QString agentId() const { return m_agentId; }
     // Where records about `device` go, also for one the workspace no longer has.
-    [[nodiscard]] JournalForwarder::Place placeOf(const model::DeviceIdentity &device) const;
+    [[nodiscard]] DevicePlace placeOf(const model::DeviceIdentity &device) const;
 
 Q_SIGNALS:
     void stopped();

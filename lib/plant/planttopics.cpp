@@ -35,6 +35,17 @@ QString agentRoot(const QString &site, const QString &agentId) {
         .join(QLatin1Char('/'));
 }
 
+DevicePlace devicePlace(const QString &site, const QString &agentId, const QString &line,
+                        const QString &name, std::optional<int> address, const QString &family) {
+    const QString level = deviceLevel(name, address, family);
+    return {line, name, deviceRoot(site, line, level),
+            QStringLiteral("%1-%2-%3").arg(agentId, sanitizeTopicLevel(line), level)};
+}
+
+DevicePlace agentPlace(const QString &site, const QString &agentId) {
+    return {QString(), QString(), agentRoot(site, agentId), QString()};
+}
+
 std::optional<DeviceTopic> parseDeviceTopic(const QString &topic) {
     const QStringList levels = topic.split(QLatin1Char('/'));
     // tipscope / v1 / site / line / device / leaf...

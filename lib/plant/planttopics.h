@@ -24,6 +24,22 @@ inline constexpr char kTopicPrefix[] = "tipscope/v1";
 [[nodiscard]] QString deviceRoot(const QString &site, const QString &line, const QString &device);
 [[nodiscard]] QString agentRoot(const QString &site, const QString &agentId);
 
+// Where a device is published: what its live messages, its presence and its journaled records
+// all go by.
+struct DevicePlace {
+    QString line;   // the workspace line's name
+    QString name;   // the name the workspace gives the device, or empty
+    QString root;   // its topic root
+    QString client; // the presence client's id
+};
+// The place of the device at `address` of `family` on the workspace line `line`, named `name`
+// there (or not), published by the agent `agentId` at `site`.
+[[nodiscard]] DevicePlace devicePlace(const QString &site, const QString &agentId,
+                                      const QString &line, const QString &name,
+                                      std::optional<int> address, const QString &family);
+// The agent's own, for records about no device in particular: no line, no presence client.
+[[nodiscard]] DevicePlace agentPlace(const QString &site, const QString &agentId);
+
 struct DeviceTopic {
     QString site;
     QString line;

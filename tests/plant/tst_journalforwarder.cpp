@@ -140,8 +140,8 @@ struct Publisher {
         client.setSettings(settings);
         forwarder = std::make_unique<plant::JournalForwarder>(
             journal, client, [](const model::DeviceIdentity &) {
-                return plant::JournalForwarder::Place{QStringLiteral("tipscope/v1/test"),
-                                                      QStringLiteral("line-1")};
+                return plant::DevicePlace{QStringLiteral("line-1"), QString(),
+                                          QStringLiteral("tipscope/v1/test"), QString()};
             });
         client.start();
     }

@@ -54,6 +54,27 @@ private Q_SLOTS:
                  QStringLiteral("tipscope/v1/plant_a/_agent/tipscope-line-pc"));
     }
 
+    // A device's place: the line's and the workspace's names kept as given (for payloads), its
+    // root and presence client made of their safe levels; the agent's own has no line and no
+    // presence client of its own.
+    void placesAreMadeOfTheSameLevels() {
+        const DevicePlace named =
+            devicePlace(QStringLiteral("Plant A"), QStringLiteral("pc-7"), QStringLiteral("Cell 3"),
+                        QStringLiteral("Rework A"), 1, QStringLiteral("DME"));
+        QCOMPARE(named.line, QStringLiteral("Cell 3"));
+        QCOMPARE(named.name, QStringLiteral("Rework A"));
+        QCOMPARE(named.root, QStringLiteral("tipscope/v1/plant_a/cell_3/rework_a"));
+        QCOMPARE(named.client, QStringLiteral("pc-7-cell_3-rework_a"));
+        const DevicePlace unnamed =
+            devicePlace(QStringLiteral("site"), QStringLiteral("pc-7"), QStringLiteral("cell-3"),
+                        QString(), std::nullopt, QStringLiteral("DDR"));
+        QCOMPARE(unnamed.root, QStringLiteral("tipscope/v1/site/cell-3/--ddr"));
+        QCOMPARE(unnamed.client, QStringLiteral("pc-7-cell-3---ddr"));
+        const DevicePlace agent = agentPlace(QStringLiteral("site"), QStringLiteral("pc-7"));
+        QCOMPARE(agent.root, agentRoot(QStringLiteral("site"), QStringLiteral("pc-7")));
+        QVERIFY(agent.line.isEmpty() && agent.name.isEmpty() && agent.client.isEmpty());
+    }
+
     void topicsParseBack() {
         const auto live =
             parseDeviceTopic(QStringLiteral("tipscope/v1/plant_a/cell-3/01-dme/port/2/live"));
