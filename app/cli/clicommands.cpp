@@ -1,8 +1,8 @@
 #include "clicommands.h"
 
 #include "cliunits.h"
-#include "model/displayunits.h"
-#include "model/writeproof.h"
+#include "model/device/displayunits.h"
+#include "model/device/writeproof.h"
 #include "protocol/elide.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"

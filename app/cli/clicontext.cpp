@@ -5,8 +5,8 @@
 #include "clicommands.h"
 
 #include "journal/workcontextfile.h"
+#include "model/context/workcontextjson.h"
 #include "model/joints/jointlimitsfile.h"
-#include "model/workcontextjson.h"
 #include "protocol/elide.h"
 
 #include <QFile>

@@ -12,8 +12,8 @@
 #include "climonitorcsv.h"
 #include "clistop.h"
 
-#include "model/displayunits.h"
-#include "model/portmodel.h"
+#include "model/device/displayunits.h"
+#include "model/device/portmodel.h"
 #include "model/workspace/workspacefile.h"
 #include "protocol/elide.h"
 #include "protocol/valuecodec.h"

@@ -4,9 +4,9 @@
 #pragma once
 
 #include "link/line.h"
+#include "model/context/workcontext.h"
 #include "model/joints/jointlimitrules.h"
 #include "model/session.h"
-#include "model/workcontext.h"
 #include "protocol/outcome.h"
 
 #include <QCoreApplication>

@@ -1,7 +1,7 @@
 // tipscope-cli profile save|diff|apply FILE: the technicians' profiles from a script.
 #include "clicommands.h"
 
-#include "model/profileapplier.h"
+#include "model/profiles/profileapplier.h"
 
 #include <QEventLoop>
 

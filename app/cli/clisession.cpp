@@ -4,8 +4,8 @@
 
 #include "clicommands.h"
 
-#include "model/feedermodel.h"
-#include "model/stationmodel.h"
+#include "model/device/feedermodel.h"
+#include "model/device/stationmodel.h"
 #include "protocol/elide.h"
 #include "sim/simline.h"
 

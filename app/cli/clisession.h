@@ -5,7 +5,7 @@
 #include "clioptions.h"
 
 #include "link/discovery.h"
-#include "model/devicemodel.h"
+#include "model/device/devicemodel.h"
 #include "protocol/catalog.h"
 
 #include <QTextStream>

@@ -1,6 +1,6 @@
 #include "cliunits.h"
 
-#include "model/displayunits.h"
+#include "model/device/displayunits.h"
 
 namespace tipscope::cli {
 

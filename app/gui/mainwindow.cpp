@@ -17,7 +17,7 @@
 #include "pages/page.h"
 
 #include "model/joints/jointlimitsfile.h"
-#include "model/supportreport.h"
+#include "model/report/supportreport.h"
 
 #include "widgets/startfolder.h"
 

@@ -5,7 +5,7 @@
 #include "cfxmessages.h"
 
 #include "journal/journal.h"
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 
 #include <QDateTime>
 #include <QJsonArray>

@@ -1,6 +1,6 @@
 #include "stationstate.h"
 
-#include "model/stationmodel.h"
+#include "model/device/stationmodel.h"
 
 #include <utility>
 

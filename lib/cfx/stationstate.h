@@ -11,7 +11,7 @@
 
 #include "cfxmessages.h"
 
-#include "model/stationmodel.h"
+#include "model/device/stationmodel.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -3,7 +3,7 @@
 #include "journalshared.h"
 #include "journalwriter.h"
 
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -11,8 +11,8 @@
 // stable English names for files and databases (kindName(), severityName()).
 #pragma once
 
-#include "model/deviceidentity.h"
-#include "model/eventlog.h"
+#include "model/context/deviceidentity.h"
+#include "model/events/eventlog.h"
 
 #include <QJsonObject>
 #include <QString>

@@ -7,8 +7,8 @@
 #pragma once
 
 #include "journalevent.h"
+#include "model/context/workcontext.h"
 #include "model/joints/jointrecord.h"
-#include "model/workcontext.h"
 
 #include <QList>
 #include <QMetaType>

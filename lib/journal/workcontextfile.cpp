@@ -1,8 +1,8 @@
 #include "workcontextfile.h"
 
+#include "model/context/workcontextjson.h"
 #include "model/io/atomicsave.h"
 #include "model/io/jsonfile.h"
-#include "model/workcontextjson.h"
 
 #include <QCoreApplication>
 #include <QDir>

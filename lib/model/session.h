@@ -10,14 +10,14 @@
 // session.
 #pragma once
 
-#include "eventlog.h"
-#include "feedermodel.h"
-#include "joints/jointwatcher.h"
-#include "pollscheduler.h"
-#include "sessionclock.h"
-#include "stationmodel.h"
-#include "telemetry/telemetry.h"
-#include "telemetryrecorder.h"
+#include "model/device/feedermodel.h"
+#include "model/device/stationmodel.h"
+#include "model/events/eventlog.h"
+#include "model/joints/jointwatcher.h"
+#include "model/live/pollscheduler.h"
+#include "model/live/sessionclock.h"
+#include "model/live/telemetryrecorder.h"
+#include "model/telemetry/telemetry.h"
 
 #include "link/discovery.h"
 #include "link/line.h"

@@ -1,8 +1,8 @@
 #include "devicepublisher.h"
 
-#include "model/devicemodel.h"
-#include "model/feedermodel.h"
-#include "model/stationmodel.h"
+#include "model/device/devicemodel.h"
+#include "model/device/feedermodel.h"
+#include "model/device/stationmodel.h"
 #include "mqtt/mqttclient.h"
 
 #include <QDateTime>

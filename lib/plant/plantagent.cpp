@@ -5,7 +5,7 @@
 #include "cfx/cfxmessages.h"
 #include "cfx/cfxpublisher.h"
 #include "journal/jointexport.h"
-#include "model/stationmodel.h"
+#include "model/device/stationmodel.h"
 #endif
 
 #include <QLoggingCategory>

@@ -1,10 +1,10 @@
 #include "plantpayloads.h"
 
 #include "journal/jointexport.h"
-#include "model/devicemodel.h"
-#include "model/feedermodel.h"
-#include "model/portmodel.h"
-#include "model/stationmodel.h"
+#include "model/device/devicemodel.h"
+#include "model/device/feedermodel.h"
+#include "model/device/portmodel.h"
+#include "model/device/stationmodel.h"
 
 #include <cmath>
 

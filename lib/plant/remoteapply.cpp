@@ -4,9 +4,9 @@
 
 #include "journal/jointexport.h"
 #include "journal/journal.h"
-#include "model/devicemodel.h"
-#include "model/profileapplier.h"
-#include "model/profilerequest.h"
+#include "model/device/devicemodel.h"
+#include "model/profiles/profileapplier.h"
+#include "model/profiles/profilerequest.h"
 #include "mqtt/mqttclient.h"
 #include "mqtt/mqtttopic.h"
 

@@ -1,7 +1,7 @@
 #include "remotetile.h"
 
-#include "model/portmodel.h"
-#include "model/problemlevel.h"
+#include "model/device/portmodel.h"
+#include "model/events/problemlevel.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -5,7 +5,7 @@
 #include "charts/chartspage.h"
 #include "charts/chartwidget.h"
 #include "model/chart/chartframe.h"
-#include "model/feedermodel.h"
+#include "model/device/feedermodel.h"
 #include "model/recording/chartcsvreader.h"
 #include "support/fifowriter.h"
 #include "testmain.h"

@@ -6,7 +6,7 @@
 #include "widgets/parametereditor.h"
 
 #include "link/simtransport.h"
-#include "model/profile.h"
+#include "model/profiles/profile.h"
 
 #include "demosession.h"
 #include "support/typing.h"

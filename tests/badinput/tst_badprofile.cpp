@@ -3,8 +3,8 @@
 // problem; "nothing will be written" follows because a profile that does not load cannot be
 // applied (tst_badcli checks `tipscope-cli profile apply` on a real wire, tests/model/tst_profile
 // the applier). Known bugs are pinned with QEXPECT_FAIL and reported in docs/reliability.md.
-#include "model/profile.h"
-#include "model/profilerequest.h"
+#include "model/profiles/profile.h"
+#include "model/profiles/profilerequest.h"
 #include "testmain.h"
 
 #include <QTest>

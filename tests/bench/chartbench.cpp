@@ -8,8 +8,8 @@
 #include "mainwindow.h"
 #include "model/appsettings.h"
 #include "model/chart/chartframe.h"
+#include "model/device/stationmodel.h"
 #include "model/session.h"
-#include "model/stationmodel.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

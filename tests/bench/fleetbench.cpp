@@ -4,8 +4,8 @@
 #include "fleetday.h"
 
 #include "model/appsettings.h"
+#include "model/device/stationmodel.h"
 #include "model/session.h"
-#include "model/stationmodel.h"
 
 #include <QElapsedTimer>
 #include <QTextStream>

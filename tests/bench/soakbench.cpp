@@ -4,8 +4,8 @@
 #include "linkdriver.h"
 #include "soakreport.h"
 
-#include "model/pollscheduler.h"
-#include "model/stationmodel.h"
+#include "model/device/stationmodel.h"
+#include "model/live/pollscheduler.h"
 #include "protocol/valuecodec.h"
 
 #include <QEventLoop>

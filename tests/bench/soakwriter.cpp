@@ -1,6 +1,6 @@
 #include "soakwriter.h"
 
-#include "model/stationmodel.h"
+#include "model/device/stationmodel.h"
 
 #include <QTimer>
 

@@ -2,7 +2,7 @@
 
 #include "jointscore.h"
 #include "link/line.h"
-#include "model/pollscheduler.h"
+#include "model/live/pollscheduler.h"
 
 #include <algorithm>
 

@@ -7,7 +7,7 @@
 // first and last readings may fall either side; over minutes that evens out.
 #pragma once
 
-#include "model/stationmodel.h"
+#include "model/device/stationmodel.h"
 
 #include <QList>
 #include <QMap>

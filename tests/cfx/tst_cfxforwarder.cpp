@@ -11,7 +11,7 @@
 #include "testmain.h"
 
 #include "journal/journalreader.h"
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 
 #include <QDateTime>
 #include <QJsonArray>

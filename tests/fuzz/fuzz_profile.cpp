@@ -9,8 +9,8 @@
 // or not, so a malformed text cannot make it read out of bounds.
 #include "fuzzcheck.h"
 
-#include "model/profile.h"
-#include "model/profilejson.h"
+#include "model/profiles/profile.h"
+#include "model/profiles/profilejson.h"
 
 #include <QMap>
 

@@ -7,8 +7,8 @@
 // that meets the file's own checks and survives a save/load round trip.
 #include "fuzzcheck.h"
 
-#include "model/profilejson.h"
-#include "model/profilerequest.h"
+#include "model/profiles/profilejson.h"
+#include "model/profiles/profilerequest.h"
 
 using namespace tipscope::model;
 

@@ -7,7 +7,7 @@
 // and reads back the same from its own toJson().
 #include "fuzzcheck.h"
 
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 #include "model/workspace/workspacefile.h"
 
 #include <QJsonDocument>

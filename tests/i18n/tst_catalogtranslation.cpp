@@ -5,10 +5,10 @@
 // run) or a label shown without catalogText() stays English here and fails.
 #include "../model/simfixture.h"
 #include "i18n/translations.h"
-#include "model/deviceidentity.h"
-#include "model/eventhistorymodel.h"
-#include "model/eventtext.h"
-#include "model/supportreport.h"
+#include "model/context/deviceidentity.h"
+#include "model/events/eventhistorymodel.h"
+#include "model/events/eventtext.h"
+#include "model/report/supportreport.h"
 #include "model/timetext.h"
 #include "testmain.h"
 

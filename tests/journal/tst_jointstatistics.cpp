@@ -7,7 +7,7 @@
 
 #include "journal/jointstatistics.h"
 #include "journal/journalhealth.h"
-#include "model/supportreport.h"
+#include "model/report/supportreport.h"
 
 #include <QDateTime>
 #include <QJsonArray>

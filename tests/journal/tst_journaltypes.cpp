@@ -1,7 +1,7 @@
 // The journal's value types: a device identity's text key reads back as the same identity
 // whatever its fields hold, and verdicts, event kinds and severities keep their stable names.
 #include "journal/journalevent.h"
-#include "model/deviceidentity.h"
+#include "model/context/deviceidentity.h"
 #include "model/joints/jointrecord.h"
 #include "testmain.h"
 

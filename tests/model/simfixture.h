@@ -4,8 +4,8 @@
 
 #include "link/line.h"
 #include "link/simtransport.h"
-#include "model/feedermodel.h"
-#include "model/stationmodel.h"
+#include "model/device/feedermodel.h"
+#include "model/device/stationmodel.h"
 #include "sim/simline.h"
 
 #include <QSignalSpy>

@@ -2,7 +2,7 @@
 // nothing is lost below the capacity, the oldest rows go first above it, and pausing holds rows
 // without dropping them. Rows say what they are in the user interface language.
 #include "i18n/translations.h"
-#include "model/consolemodel.h"
+#include "model/console/consolemodel.h"
 #include "testmain.h"
 
 #include <QSignalSpy>

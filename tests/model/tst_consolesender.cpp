@@ -5,8 +5,8 @@
 #include "testmain.h"
 
 #include "i18n/translations.h"
-#include "model/consolesender.h"
-#include "model/framecomposer.h"
+#include "model/console/consolesender.h"
+#include "model/console/framecomposer.h"
 #include "protocol/hexbytes.h"
 
 namespace tst_consolesender {

@@ -5,8 +5,8 @@
 #include "model/analysis/measurements.h"
 #include "model/chart/chartevents.h"
 #include "model/chart/chartframe.h"
+#include "model/live/telemetryrecorder.h"
 #include "model/session.h"
-#include "model/telemetryrecorder.h"
 #include "testmain.h"
 
 #include "support/ptyfixtures.h"

@@ -3,7 +3,7 @@
 // "ss.cc" delays as seconds, special values by name; typed numbers in the user's locale or with a
 // point, the unit after them or not; and nothing written that was not typed: a value between two
 // the wire can hold is refused, naming both.
-#include "model/displayunits.h"
+#include "model/device/displayunits.h"
 #include "testmain.h"
 
 #include <QTest>

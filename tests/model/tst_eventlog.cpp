@@ -2,7 +2,7 @@
 // the event already carries, and above its capacity lets the oldest go while counting them. A
 // flood of one event collapses into one entry with a count and a time span, announced once as
 // appended and then as repeated; anything else the same source says ends the flood.
-#include "model/eventlog.h"
+#include "model/events/eventlog.h"
 #include "testmain.h"
 
 #include <QSignalSpy>

@@ -2,7 +2,7 @@
 // (with the reason), the catalog's advice that never blocks, addressing from the device, the
 // command list of the device's family, and raw hex read for people.
 #include "i18n/translations.h"
-#include "model/framecomposer.h"
+#include "model/console/framecomposer.h"
 #include "testmain.h"
 
 #include "protocol/framedecoder.h"

@@ -3,7 +3,7 @@
 #include "simfixture.h"
 #include "testmain.h"
 
-#include "model/eventlog.h"
+#include "model/events/eventlog.h"
 
 namespace tst_parameters {
 

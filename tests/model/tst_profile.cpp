@@ -2,8 +2,8 @@
 #include "simfixture.h"
 #include "testmain.h"
 
-#include "model/pollscheduler.h"
-#include "model/profileapplier.h"
+#include "model/live/pollscheduler.h"
+#include "model/profiles/profileapplier.h"
 
 #include <QCryptographicHash>
 #include <QJsonArray>

@@ -2,11 +2,11 @@
 // within itself or against what the device holds, is refused with every broken bound named and
 // where each value comes from; a value the device did not answer is not taken as current; and a
 // profile that keeps the limits is written in an order that keeps them after every single write.
-#include "model/profilelimits.h"
+#include "model/profiles/profilelimits.h"
 #include "simfixture.h"
 #include "testmain.h"
 
-#include "model/parameter.h"
+#include "model/device/parameter.h"
 
 namespace tst_profilelimits {
 

@@ -2,8 +2,8 @@
 #include "simfixture.h"
 #include "testmain.h"
 
-#include "model/pollscheduler.h"
-#include "model/portmodel.h"
+#include "model/device/portmodel.h"
+#include "model/live/pollscheduler.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // SessionClock stamps samples and events: it starts at the wall clock and runs on the monotonic
 // one, ignores the wall clock set back, catches up when the wall clock runs ahead (the computer
 // slept and the monotonic clock stood still), and never goes backwards.
-#include "model/sessionclock.h"
+#include "model/live/sessionclock.h"
 #include "testmain.h"
 
 #include <QDateTime>

@@ -2,7 +2,7 @@
 // what support staff read in it names each setting's tool and port, says what to check for an
 // error, carries the UTC offset on every time, collapses a flood into one line, leaves nothing
 // blank that is not known, and gives each line of a workspace its own part under its names.
-#include "model/supportreport.h"
+#include "model/report/supportreport.h"
 #include "testmain.h"
 
 #include "model/session.h"

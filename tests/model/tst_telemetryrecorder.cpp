@@ -1,7 +1,7 @@
 // TelemetryRecorder against the simulator: a port's sample waits for the values it carries, is
 // stamped at the instant its tip reading describes (not when the answer was decoded), never
 // before the sample before it, and a tip that got no answer leaves a gap.
-#include "model/telemetryrecorder.h"
+#include "model/live/telemetryrecorder.h"
 #include "simfixture.h"
 #include "testmain.h"
 

@@ -2,7 +2,7 @@
 // a missing field is empty and text is trimmed; a field that is not text, too long, or holding a
 // control or format character (an ANSI escape, a right-to-left override) is refused by its name,
 // before anything is stamped with it.
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 #include "testmain.h"
 
 #include <QTest>

@@ -2,7 +2,7 @@
 // answer that differs is read once more and only the second decides; flags are compared by the
 // digits that matter; a read-back without an answer says why; a data field that means nothing is
 // no proof. Against the simulated station through the real queue.
-#include "model/writeproof.h"
+#include "model/device/writeproof.h"
 #include "simfixture.h"
 #include "testmain.h"
 

@@ -7,7 +7,7 @@
 
 #include "journal/journalreader.h"
 #include "model/joints/jointlimitsfile.h"
-#include "model/telemetryrecorder.h"
+#include "model/live/telemetryrecorder.h"
 #include "sim/simline.h"
 
 #include "demosession.h"

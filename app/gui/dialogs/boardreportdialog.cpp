@@ -1,7 +1,7 @@
 #include "boardreportdialog.h"
 
 #include "journal/journalreader.h"
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 #include "report/boardpdf.h"
 #include "widgets/startfolder.h"
 

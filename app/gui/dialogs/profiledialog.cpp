@@ -1,6 +1,6 @@
 #include "profiledialog.h"
 
-#include "model/devicemodel.h"
+#include "model/device/devicemodel.h"
 
 #include <QCheckBox>
 #include <QDialogButtonBox>

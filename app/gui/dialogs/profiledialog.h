@@ -11,7 +11,7 @@
 // consistent.
 #pragma once
 
-#include "model/profileapplier.h"
+#include "model/profiles/profileapplier.h"
 
 #include <QDialog>
 #include <QPointer>

@@ -1,6 +1,6 @@
 #include "workcontextdialog.h"
 
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 
 #include <QDialogButtonBox>
 #include <QFormLayout>

@@ -16,7 +16,7 @@
 
 #include "page.h"
 
-#include "model/consolemodel.h"
+#include "model/console/consolemodel.h"
 
 #include <QSortFilterProxyModel>
 #include <QTimer>

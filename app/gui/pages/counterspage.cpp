@@ -1,6 +1,6 @@
 #include "counterspage.h"
 
-#include "model/displayunits.h"
+#include "model/device/displayunits.h"
 #include "model/io/atomicsave.h"
 #include "model/io/csv.h"
 #include "widgets/deferredrefresh.h"

@@ -8,7 +8,7 @@
 // model::EventHistoryModel, which any front end can use.
 #pragma once
 
-#include "model/eventhistorymodel.h"
+#include "model/events/eventhistorymodel.h"
 #include "model/session.h"
 #include "protocol/outcome.h"
 

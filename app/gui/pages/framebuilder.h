@@ -12,8 +12,8 @@
 // are model::FrameComposer's; the panel shows its choices.
 #pragma once
 
-#include "model/consolesender.h"
-#include "model/framecomposer.h"
+#include "model/console/consolesender.h"
+#include "model/console/framecomposer.h"
 
 #include <QGroupBox>
 #include <QList>

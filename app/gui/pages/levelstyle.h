@@ -3,7 +3,7 @@
 // are warnings or errors), so the models stay free of widgets.
 #pragma once
 
-#include "model/problemlevel.h"
+#include "model/events/problemlevel.h"
 
 #include <QIcon>
 #include <QIdentityProxyModel>

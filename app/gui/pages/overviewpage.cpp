@@ -2,8 +2,8 @@
 
 #include "portcard.h"
 
-#include "model/eventtext.h"
-#include "model/telemetryrecorder.h"
+#include "model/events/eventtext.h"
+#include "model/live/telemetryrecorder.h"
 
 #include <QGridLayout>
 #include <QLabel>

@@ -4,8 +4,8 @@
 #include "widgets/sparkline.h"
 #include "widgets/valuespinbox.h"
 
+#include "model/device/stationmodel.h"
 #include "model/joints/jointtable.h"
-#include "model/stationmodel.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

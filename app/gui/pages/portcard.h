@@ -16,7 +16,7 @@
 // going down or up and another unit show at once.
 #pragma once
 
-#include "model/problemlevel.h"
+#include "model/events/problemlevel.h"
 
 #include <QElapsedTimer>
 #include <QFrame>

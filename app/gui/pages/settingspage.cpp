@@ -5,7 +5,7 @@
 #include "widgets/flowlayout.h"
 #include "widgets/parametereditor.h"
 
-#include "model/profile.h"
+#include "model/profiles/profile.h"
 
 #include <QComboBox>
 #include <QDir>

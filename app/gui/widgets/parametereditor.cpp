@@ -3,7 +3,7 @@
 #include "deferredrefresh.h"
 #include "valuespinbox.h"
 
-#include "model/devicemodel.h"
+#include "model/device/devicemodel.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -14,7 +14,7 @@
 // the state says when it was last read.
 #pragma once
 
-#include "model/parameter.h"
+#include "model/device/parameter.h"
 
 #include <QPointer>
 #include <QWidget>

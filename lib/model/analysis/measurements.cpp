@@ -1,6 +1,6 @@
 #include "model/analysis/measurements.h"
 
-#include "model/portmodel.h"
+#include "model/device/portmodel.h"
 
 #include <algorithm>
 #include <cstdlib>

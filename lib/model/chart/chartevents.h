@@ -15,7 +15,7 @@
 
 #include "model/chart/chartseries.h"
 
-#include "model/eventlog.h"
+#include "model/events/eventlog.h"
 
 #include <deque>
 #include <optional>

@@ -1,7 +1,7 @@
 #include "model/chart/chartseries.h"
 
+#include "model/live/telemetryrecorder.h"
 #include "model/session.h"
-#include "model/telemetryrecorder.h"
 #include "protocol/catalog.h"
 
 #include <QCoreApplication>

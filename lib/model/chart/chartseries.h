@@ -7,8 +7,8 @@
 // (replay), so live and replay charts are drawn by the same code.
 #pragma once
 
-#include "model/deviceidentity.h"
-#include "model/displayunits.h"
+#include "model/context/deviceidentity.h"
+#include "model/device/displayunits.h"
 #include "model/telemetry/telemetry.h"
 
 #include <QColor>

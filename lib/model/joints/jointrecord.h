@@ -15,7 +15,7 @@
 // recoveryUncertaintyMs, and it is never judged ok unless the whole of that interval is.
 #pragma once
 
-#include "model/deviceidentity.h"
+#include "model/context/deviceidentity.h"
 
 #include <QMetaType>
 #include <QString>

@@ -13,9 +13,9 @@
 // stable name ("slow recovery"), an empty recovery cell for a joint that never recovered.
 #pragma once
 
-#include "model/displayunits.h"
+#include "model/device/displayunits.h"
+#include "model/events/problemlevel.h"
 #include "model/joints/jointrecord.h"
-#include "model/problemlevel.h"
 
 #include <QAbstractTableModel>
 #include <QList>

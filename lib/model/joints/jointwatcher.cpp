@@ -1,6 +1,6 @@
 #include "model/joints/jointwatcher.h"
 
-#include "model/displayunits.h"
+#include "model/device/displayunits.h"
 
 #include "model/timetext.h"
 

@@ -12,10 +12,10 @@
 // It reads the same samples the charts draw, so what it measures is what a person sees.
 #pragma once
 
+#include "model/device/stationmodel.h"
 #include "model/joints/jointdetector.h"
 #include "model/joints/jointlimitrules.h"
 #include "model/joints/tipwear.h"
-#include "model/stationmodel.h"
 #include "model/telemetry/telemetry.h"
 
 #include <QObject>

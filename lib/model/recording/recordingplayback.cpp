@@ -1,6 +1,6 @@
 #include "model/recording/recordingplayback.h"
 
-#include "model/telemetryrecorder.h"
+#include "model/live/telemetryrecorder.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>

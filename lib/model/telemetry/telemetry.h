@@ -1,5 +1,6 @@
-// Telemetry: the sample histories of every port and feeder, one TelemetryBuffer per key
-// ("01/port1", "10/feeder"), and a bounded-rate notice that samples arrived.
+// Telemetry: the sample histories of every port and feeder, one TelemetryBuffer per key (a
+// device's identity and its channel, TelemetryKey below), and a bounded-rate notice that samples
+// arrived.
 //
 // Live buffers are tiered (TelemetryTiers): a day of a fleet fits in memory. setTiers() sets how
 // for the buffers made after it; a buffer keeps the tiers it was made with.

@@ -1,8 +1,8 @@
 #include "model/workspace/fleettile.h"
 
-#include "model/feedermodel.h"
+#include "model/device/feedermodel.h"
+#include "model/device/stationmodel.h"
 #include "model/joints/jointtable.h"
-#include "model/stationmodel.h"
 #include "model/workspace/workspace.h"
 
 #include <QDateTime>

@@ -12,9 +12,9 @@
 // the line is already down takes the device's last reading instead (the line was up then).
 #pragma once
 
-#include "model/devicemodel.h"
+#include "model/device/devicemodel.h"
+#include "model/events/problemlevel.h"
 #include "model/joints/jointrecord.h"
-#include "model/problemlevel.h"
 
 #include <QList>
 #include <QObject>

@@ -1,6 +1,6 @@
 #include "model/workspace/linetile.h"
 
-#include "model/eventtext.h"
+#include "model/events/eventtext.h"
 #include "model/workspace/workspace.h"
 
 #include <QDateTime>

@@ -12,9 +12,9 @@
 // A file written by toJson() reads back equal.
 #pragma once
 
+#include "model/context/workcontext.h"
 #include "model/joints/jointlimitrules.h"
 #include "model/session.h"
-#include "model/workcontext.h"
 
 #include "protocol/outcome.h"
 

@@ -3,7 +3,7 @@
 // range, and a failure names it as "connection.baud".
 #include "model/workspace/workspacefile.h"
 
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 
 #include "link/tcptransport.h"
 

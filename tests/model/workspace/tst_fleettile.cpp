@@ -6,7 +6,7 @@
 #include "model/workspace/fleettile.h"
 #include "testmain.h"
 
-#include "model/stationmodel.h"
+#include "model/device/stationmodel.h"
 #include "model/workspace/workspace.h"
 
 #include "link/simtransport.h"

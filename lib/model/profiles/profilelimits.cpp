@@ -1,6 +1,6 @@
 #include "profilelimits.h"
 
-#include "devicemodel.h"
+#include "model/device/devicemodel.h"
 
 #include <QCoreApplication>
 

@@ -2,7 +2,7 @@
 // language of the user, leaving out what is not known instead of printing it blank.
 #include "supportreport.h"
 
-#include "eventtext.h"
+#include "model/events/eventtext.h"
 
 #include "protocol/catalogtext.h"
 

@@ -1,6 +1,6 @@
 #include "consolemodel.h"
 
-#include "session.h"
+#include "model/session.h"
 
 #include "model/io/atomicsave.h"
 #include "protocol/catalog.h"

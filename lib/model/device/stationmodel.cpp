@@ -1,6 +1,6 @@
 #include "stationmodel.h"
 
-#include "eventlog.h"
+#include "model/events/eventlog.h"
 
 #include <QCoreApplication>
 

@@ -1,7 +1,7 @@
 #include "pollscheduler.h"
 
-#include "devicemodel.h"
-#include "portmodel.h"
+#include "model/device/devicemodel.h"
+#include "model/device/portmodel.h"
 
 #include <limits>
 

@@ -1,6 +1,6 @@
 #include "profileapplier.h"
 
-#include "devicemodel.h"
+#include "model/device/devicemodel.h"
 #include "profilelimits.h"
 
 #include "protocol/hexbytes.h"

@@ -1,10 +1,10 @@
 // The support report as JSON, and written to files with its text beside it.
 #include "supportreport.h"
 
+#include "model/device/settingname.h"
 #include "model/io/atomicsave.h"
-#include "session.h"
-#include "settingname.h"
-#include "timetext.h"
+#include "model/session.h"
+#include "model/timetext.h"
 
 #include <QDir>
 #include <QJsonArray>

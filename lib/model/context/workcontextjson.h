@@ -7,7 +7,7 @@
 // a file as in a command.
 #pragma once
 
-#include "model/workcontext.h"
+#include "model/context/workcontext.h"
 
 #include "protocol/outcome.h"
 

@@ -1,6 +1,6 @@
 #include "profile.h"
 
-#include "devicemodel.h"
+#include "model/device/devicemodel.h"
 #include "profilejson.h"
 
 #include "model/io/atomicsave.h"

@@ -1,6 +1,6 @@
 #include "framecomposer.h"
 
-#include "devicemodel.h"
+#include "model/device/devicemodel.h"
 
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"

@@ -5,8 +5,8 @@
 // robot's own controls (working / stand / cooling, selected temperature).
 #pragma once
 
+#include "model/events/problemlevel.h"
 #include "parameter.h"
-#include "problemlevel.h"
 
 #include <QObject>
 

@@ -1,4 +1,4 @@
-#include "model/telemetryrecorder.h"
+#include "model/live/telemetryrecorder.h"
 
 #include <cmath>
 

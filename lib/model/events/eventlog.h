@@ -9,7 +9,7 @@
 // count on an entry already announced (found again by its id, as its position can shift).
 #pragma once
 
-#include "deviceidentity.h"
+#include "model/context/deviceidentity.h"
 
 #include <QDateTime>
 #include <QJsonObject>

@@ -46,7 +46,7 @@
 // values are read early: errors, settings, counters and identity keep their intervals.
 #pragma once
 
-#include "parameter.h"
+#include "model/device/parameter.h"
 
 #include <QElapsedTimer>
 #include <QHash>

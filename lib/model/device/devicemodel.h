@@ -17,7 +17,7 @@
 
 #include "action.h"
 #include "displayunits.h"
-#include "eventlog.h"
+#include "model/events/eventlog.h"
 #include "parameter.h"
 
 #include "link/discovery.h"

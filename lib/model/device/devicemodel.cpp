@@ -1,6 +1,6 @@
 #include "devicemodel.h"
 
-#include "eventlog.h"
+#include "model/events/eventlog.h"
 
 #include <QCoreApplication>
 

@@ -6,8 +6,8 @@
 #pragma once
 
 #include "devicemodel.h"
+#include "model/events/problemlevel.h"
 #include "portmodel.h"
-#include "problemlevel.h"
 
 namespace tipscope::model {
 

@@ -10,8 +10,8 @@
 // the history gets a gap that ends at its next sample. The recorder does not own the models.
 #pragma once
 
-#include "model/feedermodel.h"
-#include "model/stationmodel.h"
+#include "model/device/feedermodel.h"
+#include "model/device/stationmodel.h"
 #include "model/telemetry/telemetry.h"
 
 #include <QObject>

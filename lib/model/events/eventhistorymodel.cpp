@@ -1,7 +1,7 @@
 #include "eventhistorymodel.h"
 
 #include "eventtext.h"
-#include "timetext.h"
+#include "model/timetext.h"
 
 #include <QCoreApplication>
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "model/workcontextjson.h"
+#include "model/context/workcontextjson.h"
 
 #include "protocol/elide.h"
 

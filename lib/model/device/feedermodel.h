@@ -5,7 +5,7 @@
 #pragma once
 
 #include "devicemodel.h"
-#include "problemlevel.h"
+#include "model/events/problemlevel.h"
 
 namespace tipscope::model {
 
