@@ -5,6 +5,8 @@
 #include <QCoreApplication>
 
 #include <cmath>
+#include <map>
+#include <optional>
 
 namespace tipscope::cfx {
 
@@ -157,6 +159,18 @@ QJsonObject jointStage(int index, const journal::StoredJoint &stored) {
             {QStringLiteral("Parameters"), parameters}};
 }
 
+// The station's own doing while the board was made: each port's time in each status.
+QJsonArray statusReadings(const BoardWork &work) {
+    static const char *const kStatus[] = {"Working", "Stand", "Sleep", "Hibernation"};
+    QJsonArray readings;
+    for (const PortStatusTimes &times : portStatusTimes(work))
+        for (int s = 0; s < 4; ++s)
+            readings.append(genericValue(
+                QStringLiteral("Port%1%2Time").arg(times.port).arg(QLatin1String(kStatus[s])),
+                numericValue(seconds(times.ms[s]), QStringLiteral("s"))));
+    return readings;
+}
+
 QJsonObject genericData(const BoardWork &work) {
     QJsonArray stages;
     for (int i = 0; i < work.joints.size(); ++i)
@@ -181,12 +195,54 @@ QJsonObject genericData(const BoardWork &work) {
     return {
         {QStringLiteral("$type"), QStringLiteral("CFX.Structures.Generic.GenericProcessData, CFX")},
         {QStringLiteral("Setpoints"), QJsonArray()},
-        {QStringLiteral("Readings"), QJsonArray()},
+        {QStringLiteral("Readings"), statusReadings(work)},
         {QStringLiteral("Parameters"), parameters},
         {QStringLiteral("StageData"), stages}};
 }
 
 } // namespace
+
+QList<PortStatusTimes> portStatusTimes(const BoardWork &work) {
+    struct Walk {
+        PortStatusTimes times;
+        std::optional<int> status; // the status digit since `sinceMs`
+        qint64 sinceMs = 0;
+        bool known = false;
+    };
+    std::map<int, Walk> ports;
+    const auto digit = [](const QJsonValue &v) {
+        return v.isDouble() ? std::optional<int>(int(v.toDouble()) % 10) : std::nullopt;
+    };
+    for (const journal::StoredEvent &stored : work.statusChanges) {
+        const journal::JournalEvent &event = stored.record;
+        const std::optional<int> from = digit(event.details.value(QStringLiteral("from")));
+        const std::optional<int> to = digit(event.details.value(QStringLiteral("to")));
+        if (!event.port || !to || *to < 0 || *to > 3)
+            continue;
+        Walk &walk = ports[*event.port];
+        walk.times.port = *event.port;
+        const qint64 at = qBound(work.startedMs, event.timeMs, work.finishedMs);
+        // The status before this change: the one the last change went to, or this one's "from".
+        const std::optional<int> before = walk.status ? walk.status : from;
+        const qint64 since = walk.status ? walk.sinceMs : work.startedMs;
+        if (before && *before >= 0 && *before <= 3 && at > since) {
+            walk.times.ms[*before] += at - since;
+            walk.known = true;
+        }
+        walk.status = to;
+        walk.sinceMs = at;
+    }
+    QList<PortStatusTimes> out;
+    for (auto &[port, walk] : ports) {
+        if (walk.status && work.finishedMs > walk.sinceMs) {
+            walk.times.ms[*walk.status] += work.finishedMs - walk.sinceMs;
+            walk.known = true;
+        }
+        if (walk.known)
+            out.append(walk.times);
+    }
+    return out;
+}
 
 QString processingResultOf(journal::BoardResult result) {
     switch (result) {

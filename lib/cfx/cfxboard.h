@@ -26,7 +26,20 @@ struct BoardWork {
     qint64 startedMs = 0;               // the work context named the board
     qint64 finishedMs = 0;              // it named another, or none
     QList<journal::StoredJoint> joints; // this station's on the board, oldest first
+    // This station's port status changes: for each port the last one before the board (the
+    // status it began in), then those while it was made, oldest first. Their details carry the
+    // wire's status numbers ("from", "to"); a change journaled without them is passed over.
+    QList<journal::StoredEvent> statusChanges;
 };
+
+// How long each port of the station spent in each status while the board was made (working,
+// in the stand, sleep, hibernation: the status digit of the port's status), from
+// BoardWork::statusChanges; a port whose status is never known then is left out.
+struct PortStatusTimes {
+    int port = 0;
+    qint64 ms[4] = {0, 0, 0, 0};
+};
+[[nodiscard]] QList<PortStatusTimes> portStatusTimes(const BoardWork &work);
 
 // From the joints' verdicts (journal::BoardResult): Succeeded, Failed, or Error when a joint
 // could not be judged; what a board without joints at this station is: see workCompleted().

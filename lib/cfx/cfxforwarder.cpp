@@ -229,6 +229,10 @@ CfxForwarder::stationEnvelopesOf(const BoardChange &board, const model::DeviceId
             return std::nullopt;
         }
         work.joints = *made;
+        const auto changes = statusChangesOf(station, work.startedMs, work.finishedMs);
+        if (!changes)
+            return std::nullopt;
+        work.statusChanges = *changes;
         if (!work.joints.isEmpty())
             add(unitsProcessed(work), work.finishedMs);
         add(workCompleted(work), work.finishedMs);
@@ -242,6 +246,36 @@ CfxForwarder::stationEnvelopesOf(const BoardChange &board, const model::DeviceId
         add(workStarted(work), work.startedMs);
     }
     return envelopes;
+}
+
+std::optional<QList<journal::StoredEvent>>
+CfxForwarder::statusChangesOf(const model::DeviceIdentity &station, qint64 sinceMs,
+                              qint64 untilMs) {
+    journal::EventFilter filter;
+    filter.deviceKey = station.key();
+    filter.kinds = {journal::JournalEvent::Kind::Status};
+    // Each port's last change before the board says the status it began in.
+    filter.untilMs = sinceMs;
+    filter.limit = kLookBack;
+    filter.order = journal::Order::NewestFirst;
+    const auto before = m_reader.events(filter);
+    filter.sinceMs = sinceMs;
+    filter.untilMs = untilMs + 1;
+    filter.limit = 0;
+    filter.order = journal::Order::OldestFirst;
+    const auto during = before ? m_reader.events(filter) : before;
+    if (!during) {
+        setProblem(during.error());
+        return std::nullopt;
+    }
+    QList<journal::StoredEvent> changes;
+    QSet<int> seen;
+    for (const journal::StoredEvent &event : *before)
+        if (event.record.port && !seen.contains(*event.record.port)) {
+            seen.insert(*event.record.port);
+            changes.prepend(event);
+        }
+    return changes + *during;
 }
 
 std::optional<bool> CfxForwarder::openBoard(const journal::StoredEvent &change) {

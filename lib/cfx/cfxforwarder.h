@@ -119,6 +119,10 @@ private:
     [[nodiscard]] QUuid raisingOccurrence(const journal::StoredEvent &cleared);
     void raised(const journal::StoredEvent &event);
     [[nodiscard]] bool recallOpenFaults();
+    // The station's port status changes that BoardWork::statusChanges holds for a board made
+    // from `sinceMs` to `untilMs`; nothing when the journal could not be read.
+    [[nodiscard]] std::optional<QList<journal::StoredEvent>>
+    statusChangesOf(const model::DeviceIdentity &station, qint64 sinceMs, qint64 untilMs);
     // Takes up a context change: false while it must wait for the stations to be known;
     // nothing when the journal could not be read.
     [[nodiscard]] std::optional<bool> openBoard(const journal::StoredEvent &change);

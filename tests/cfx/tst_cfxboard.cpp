@@ -45,6 +45,32 @@ QJsonObject readingOf(const QJsonObject &stage, const QString &name) {
     return {};
 }
 
+// A port's status change as the station model journals it: the wire's numbers in its details.
+journal::StoredEvent statusChange(int port, qint64 timeMs, std::optional<int> from,
+                                  std::optional<int> to) {
+    journal::StoredEvent event;
+    event.record.kind = journal::JournalEvent::Kind::Status;
+    event.record.port = port;
+    event.record.timeMs = timeMs;
+    event.record.text = QStringLiteral("a change");
+    if (from)
+        event.record.details.insert(QStringLiteral("from"), *from);
+    if (to)
+        event.record.details.insert(QStringLiteral("to"), *to);
+    return event;
+}
+
+// The GenericProcessData of the station's UnitsProcessed for `work`.
+QJsonObject genericDataOf(const BoardWork &work) {
+    return unitsProcessed(work)
+        .body.value(QStringLiteral("UnitProcessData"))
+        .toArray()
+        .at(0)
+        .toObject()
+        .value(QStringLiteral("UnitProcessData"))
+        .toObject();
+}
+
 QString parameterOf(const QJsonObject &data, const QString &name) {
     for (const QJsonValue &parameter : data.value(QStringLiteral("Parameters")).toArray())
         if (parameter.toObject().value(QStringLiteral("Name")).toString() == name)
@@ -154,13 +180,7 @@ private Q_SLOTS:
         work.joints[0].record.dipDepth = 41.5;
         work.joints[0].record.limits = model::JudgedLimits{5, 4000, 70};
         work.joints[1].record.recoveryMs.reset(); // the tip never came back
-        const QJsonObject data = unitsProcessed(work)
-                                     .body.value(QStringLiteral("UnitProcessData"))
-                                     .toArray()
-                                     .at(0)
-                                     .toObject()
-                                     .value(QStringLiteral("UnitProcessData"))
-                                     .toObject();
+        const QJsonObject data = genericDataOf(work);
         QCOMPARE(data.value(QStringLiteral("$type")).toString(),
                  QStringLiteral("CFX.Structures.Generic.GenericProcessData, CFX"));
         QCOMPARE(parameterOf(data, QStringLiteral("BoardSerial")), work.serial);
@@ -203,6 +223,40 @@ private Q_SLOTS:
                     .isNull());
         QCOMPARE(parameterOf(second, QStringLiteral("Recovered")), QStringLiteral("false"));
         QCOMPARE(parameterOf(second, QStringLiteral("Verdict")), QStringLiteral("incomplete"));
+    }
+
+    // The station's own doing while the board was made: each port's time in each status, from
+    // the status it began in (the last change before the board) and its changes during it; the
+    // flags beyond the status digit (cooling, suction) change nothing.
+    void eachPortsTimeInEachStatusIsInTheGenericProcessData() {
+        BoardWork work = sampleWork({model::JointVerdict::Ok});
+        work.finishedMs = work.startedMs + 10000;
+        const qint64 t0 = work.startedMs;
+        work.statusChanges = {
+            statusChange(1, t0 - 5000, 1, 0),  // working when the board began
+            statusChange(2, t0 + 2000, 11, 0), // in the stand, cooling, until then
+            statusChange(1, t0 + 4000, 0, 1),
+            statusChange(1, t0 + 7000, 1, 2),
+            statusChange(3, t0 + 5000, std::nullopt, std::nullopt), // journaled without numbers
+        };
+        const QList<PortStatusTimes> times = portStatusTimes(work);
+        QCOMPARE(times.size(), 2);
+        QCOMPARE(times.at(0).port, 1);
+        QCOMPARE(QList<qint64>(times.at(0).ms, times.at(0).ms + 4),
+                 (QList<qint64>{4000, 3000, 3000, 0}));
+        QCOMPARE(times.at(1).port, 2);
+        QCOMPARE(QList<qint64>(times.at(1).ms, times.at(1).ms + 4),
+                 (QList<qint64>{8000, 2000, 0, 0}));
+
+        const QJsonObject data = genericDataOf(work);
+        const QJsonObject sleeping = readingOf(data, QStringLiteral("Port1SleepTime"));
+        QCOMPARE(sleeping.value(QStringLiteral("Value")).toDouble(), 3.0);
+        QCOMPARE(sleeping.value(QStringLiteral("ValueUnits")).toString(), QStringLiteral("s"));
+        QCOMPARE(readingOf(data, QStringLiteral("Port2WorkingTime"))
+                     .value(QStringLiteral("Value"))
+                     .toDouble(),
+                 8.0);
+        QVERIFY(readingOf(data, QStringLiteral("Port3WorkingTime")).isEmpty());
     }
 };
 

@@ -227,6 +227,11 @@ private Q_SLOTS:
         const QUuid began = journal.append(contextChange(none, first, testing::kT0), first);
         for (int i : {0, 1, 4}) // ok, slow recovery, one that never recovered
             journal.append(testing::sampleJoint(i, testing::kT0 + 1000 * (i + 1)), first);
+        // Port 1 to the stand half way through the board, as the station model journals it.
+        JournalEvent toStand = portEvent(JournalEvent::Kind::Status, JournalEvent::Severity::Info,
+                                         1, testing::kT0 + 5000);
+        toStand.details = {{QStringLiteral("from"), 0}, {QStringLiteral("to"), 1}};
+        journal.append(toStand, first);
         journal.append(contextChange(first, firstAgain, testing::kT0 + 7000), firstAgain);
         journal.append(contextChange(none, firstAgain, testing::kT0 + 8000), firstAgain);
         const QUuid next =
@@ -271,6 +276,22 @@ private Q_SLOTS:
             QCOMPARE(processed.value(QStringLiteral("TransactionId")).toString(), transaction);
             QCOMPARE(processed.value(QStringLiteral("OverallResult")).toString(),
                      QStringLiteral("Failed"));
+            QJsonObject secondsIn;
+            for (const QJsonValue &reading : processed.value(QStringLiteral("UnitProcessData"))
+                                                 .toArray()
+                                                 .at(0)
+                                                 .toObject()
+                                                 .value(QStringLiteral("UnitProcessData"))
+                                                 .toObject()
+                                                 .value(QStringLiteral("Readings"))
+                                                 .toArray())
+                secondsIn.insert(reading.toObject().value(QStringLiteral("Name")).toString(),
+                                 reading.toObject()
+                                     .value(QStringLiteral("Value"))
+                                     .toObject()
+                                     .value(QStringLiteral("Value")));
+            QCOMPARE(secondsIn.value(QStringLiteral("Port1WorkingTime")).toDouble(), 5.0);
+            QCOMPARE(secondsIn.value(QStringLiteral("Port1StandTime")).toDouble(), 5.0);
             QCOMPARE(processed.value(QStringLiteral("CommonProcessData"))
                          .toObject()
                          .value(QStringLiteral("SolderPoints"))

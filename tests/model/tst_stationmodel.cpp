@@ -155,6 +155,9 @@ void TestStationModel::errorAlarmAndStatusChangesReachTheEventLog() {
     QCOMPARE(byKind.value(Event::Kind::Alarm).text, QStringLiteral("High temperature alarm"));
     QCOMPARE(byKind.value(Event::Kind::Status).text, QStringLiteral("Working → Stand"));
     QVERIFY(byKind.value(Event::Kind::Status).source.endsWith(QStringLiteral("port 4")));
+    // The words are translated; the wire's numbers beside them are for programs.
+    QCOMPARE(byKind.value(Event::Kind::Status).details,
+             (QJsonObject{{QStringLiteral("from"), 0}, {QStringLiteral("to"), 1}}));
 }
 
 void TestStationModel::anotherCatalogsEntriesBecomeParameters() {

@@ -13,6 +13,12 @@ struct StationModelTr {
     Q_DECLARE_TR_FUNCTIONS(StationModel)
 };
 
+// A change's wire numbers beside its words, for programs: the words are translated, and the
+// status number holds flags besides the status (docs/mqtt.md, the event's details).
+QJsonObject wireChange(qint64 from, qint64 to) {
+    return {{QStringLiteral("from"), from}, {QStringLiteral("to"), to}};
+}
+
 Event::Severity severityOf(const Catalog &catalog, const QString &tableName, int code) {
     const QString s = catalog.severity(tableName, code);
     if (s == QLatin1String("error"))
@@ -118,13 +124,13 @@ void StationModel::logChange(Parameter *p, int port) {
         if (!first)
             logEvent(Event::Kind::ToolChange, Event::Severity::Info, port,
                      StationModelTr::tr("%1 → %2").arg(toolName(int(before)), toolName(int(*v))),
-                     {}, age);
+                     wireChange(before, *v), age);
     } else if (role == Role::Status) {
         if (!first)
             logEvent(Event::Kind::Status, Event::Severity::Info, port,
                      StationModelTr::tr("%1 → %2").arg(PortStatus::fromNumber(before).text(),
                                                        PortStatus::fromNumber(*v).text()),
-                     {}, age);
+                     wireChange(before, *v), age);
     } else if (role == Role::Alarm) {
         if (*v != 0)
             logEvent(Event::Kind::Alarm, Event::Severity::Warning, port, p->displayText(), {}, age);
