@@ -4,22 +4,22 @@
 <context>
     <name>Action</name>
     <message>
-        <location filename="../lib/model/action.cpp" line="28"/>
+        <location filename="../lib/model/device/action.cpp" line="28"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="30"/>
+        <location filename="../lib/model/device/action.cpp" line="30"/>
         <source>%1 needs an explicit confirmation: %2</source>
         <translation>%1 erfordert eine ausdrückliche Bestätigung: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="32"/>
+        <location filename="../lib/model/device/action.cpp" line="32"/>
         <source>%1 is already running</source>
         <translation>%1 läuft bereits</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="43"/>
+        <location filename="../lib/model/device/action.cpp" line="43"/>
         <source>%1 done</source>
         <translation>%1 erledigt</translation>
     </message>
@@ -170,22 +170,22 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="32"/>
+        <location filename="../app/agent/main.cpp" line="33"/>
         <source>without a user name</source>
         <translation>ohne Benutzernamen</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="34"/>
+        <location filename="../app/agent/main.cpp" line="35"/>
         <source>as %1, without a password</source>
         <translation>als %1, ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="35"/>
+        <location filename="../app/agent/main.cpp" line="36"/>
         <source>as %1, password from the %2</source>
         <translation>als %1, Passwort aus %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="41"/>
+        <location filename="../app/agent/main.cpp" line="42"/>
         <source>site %1, %n line(s) (%2), no MQTT broker: CFX only</source>
         <translation>
             <numerusform>Standort %1, %n Linie (%2), kein MQTT-Broker: nur CFX</numerusform>
@@ -193,7 +193,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="44"/>
+        <location filename="../app/agent/main.cpp" line="45"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>Standort %1, %n Linie (%2), Broker %3:%4%5 %6</numerusform>
@@ -201,67 +201,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="48"/>
+        <location filename="../app/agent/main.cpp" line="49"/>
         <source> with TLS</source>
         <translation> mit TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="60"/>
+        <location filename="../app/agent/main.cpp" line="64"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Betreibt die Linien eines Arbeitsbereichs ohne Bildschirm, hält ihre Lötstellen und Ereignisse im Journal fest und veröffentlicht sie an einen MQTT-Broker.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="67"/>
+        <location filename="../app/agent/main.cpp" line="71"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>Die Konfiguration des Agenten (Vorgabe %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="68"/>
+        <location filename="../app/agent/main.cpp" line="72"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="71"/>
+        <location filename="../app/agent/main.cpp" line="75"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Liest die Konfiguration und ihren Arbeitsbereich, meldet Fehler und beendet sich.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="78"/>
+        <location filename="../app/agent/main.cpp" line="82"/>
         <source>unexpected argument %1</source>
         <translation>unerwartetes Argument %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="94"/>
+        <location filename="../app/agent/main.cpp" line="98"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="98"/>
+        <location filename="../app/agent/main.cpp" line="102"/>
         <source>%1 is good: %2</source>
         <translation>%1 ist in Ordnung: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="110"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>Konfiguration abgelehnt, die laufende bleibt: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="114"/>
+        <location filename="../app/agent/main.cpp" line="118"/>
         <source>reloading: %1</source>
         <translation>neu laden: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="118"/>
+        <location filename="../app/agent/main.cpp" line="122"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 startet: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="123"/>
+        <location filename="../app/agent/main.cpp" line="127"/>
         <source>stopped: %1</source>
         <translation>beendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="126"/>
+        <location filename="../app/agent/main.cpp" line="130"/>
         <source>stopped</source>
         <translation>beendet</translation>
     </message>
@@ -2093,114 +2093,114 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="41"/>
+        <location filename="../app/cli/clicommands.cpp" line="43"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="65"/>
+        <location filename="../app/cli/clicommands.cpp" line="67"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="104"/>
+        <location filename="../app/cli/clicommands.cpp" line="106"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="117"/>
+        <location filename="../app/cli/clicommands.cpp" line="119"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="140"/>
+        <location filename="../app/cli/clicommands.cpp" line="144"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="145"/>
+        <location filename="../app/cli/clicommands.cpp" line="158"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="153"/>
+        <location filename="../app/cli/clicommands.cpp" line="164"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="159"/>
+        <location filename="../app/cli/clicommands.cpp" line="171"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="176"/>
+        <location filename="../app/cli/clicommands.cpp" line="187"/>
         <source>the device answered &apos;%1&apos;, which is no value</source>
         <translation>das Gerät antwortete &apos;%1&apos;, was kein Wert ist</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="197"/>
+        <location filename="../app/cli/clicommands.cpp" line="208"/>
         <source>tipscope-cli: refused, nothing was sent: %1 is bounded by %2, which could not be read: %3</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1 ist durch %2 begrenzt, das nicht gelesen werden konnte: %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="228"/>
+        <location filename="../app/cli/clicommands.cpp" line="239"/>
         <source>%1 (--force sends it anyway)</source>
         <translation>%1 (--force sendet es trotzdem)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="239"/>
+        <location filename="../app/cli/clicommands.cpp" line="250"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="248"/>
+        <location filename="../app/cli/clicommands.cpp" line="259"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="221"/>
+        <location filename="../app/cli/clicommands.cpp" line="232"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="224"/>
+        <location filename="../app/cli/clicommands.cpp" line="235"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="205"/>
-        <location filename="../app/cli/clicommands.cpp" line="278"/>
-        <location filename="../app/cli/clicommands.cpp" line="304"/>
+        <location filename="../app/cli/clicommands.cpp" line="216"/>
+        <location filename="../app/cli/clicommands.cpp" line="289"/>
+        <location filename="../app/cli/clicommands.cpp" line="315"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="295"/>
+        <location filename="../app/cli/clicommands.cpp" line="306"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="370"/>
+        <location filename="../app/cli/clicommands.cpp" line="381"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="393"/>
+        <location filename="../app/cli/clicommands.cpp" line="404"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="396"/>
+        <location filename="../app/cli/clicommands.cpp" line="407"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="398"/>
+        <location filename="../app/cli/clicommands.cpp" line="409"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="53"/>
+        <location filename="../app/cli/clicommands.cpp" line="55"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n Rohbyte, kein Telegramm (%1)</numerusform>
@@ -2797,117 +2797,117 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="102"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="118"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="250"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="252"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="252"/>
         <source>RX chunk</source>
         <translation>RX-Block</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="254"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="258"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="266"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="266"/>
         <source>Read</source>
         <translation>Lesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="268"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="268"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="270"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="270"/>
         <source>Answer</source>
         <translation>Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="315"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="315"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="331"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="331"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="332"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="332"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="333"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="333"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="334"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="334"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="335"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="335"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="336"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -2915,22 +2915,22 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>DeviceIdentity</name>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="73"/>
+        <location filename="../lib/model/context/deviceidentity.cpp" line="73"/>
         <source>%1 at %2</source>
         <translation>%1 an Adresse %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
+        <location filename="../lib/model/context/deviceidentity.cpp" line="76"/>
         <source>software unknown</source>
         <translation>Software unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="77"/>
+        <location filename="../lib/model/context/deviceidentity.cpp" line="77"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="78"/>
+        <location filename="../lib/model/context/deviceidentity.cpp" line="78"/>
         <source>%1 on %2, %3</source>
         <translation>%1 über %2, %3</translation>
     </message>
@@ -2938,53 +2938,53 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="69"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="69"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="70"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="70"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="74"/>
-        <location filename="../lib/model/devicemodel.cpp" line="157"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="74"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="157"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="217"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="217"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="119"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="119"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="143"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="143"/>
         <source>tool %1</source>
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="154"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="154"/>
         <source>%1, %2, port %3</source>
         <translation>%1, %2, Port %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="160"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="160"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="203"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="203"/>
         <source>Monitor-only mode is on: nothing is written.</source>
         <translation>Nur-Beobachten ist an: nichts wird geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="205"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="205"/>
         <source>Not connected: nothing can be sent until the line is back.</source>
         <translation>Nicht verbunden: nichts kann gesendet werden, bis die Leitung wieder da ist.</translation>
     </message>
@@ -2992,17 +2992,17 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>DisplayUnits</name>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="81"/>
+        <location filename="../lib/model/device/displayunits.cpp" line="81"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>&apos;%1&apos; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="86"/>
+        <location filename="../lib/model/device/displayunits.cpp" line="86"/>
         <source>&apos;%1&apos; is far outside what %2 can take</source>
         <translation>&apos;%1&apos; liegt weit außerhalb dessen, was %2 zulässt</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="93"/>
+        <location filename="../lib/model/device/displayunits.cpp" line="93"/>
         <source>%1 lies between the values %2 can take: %3 or %4</source>
         <translation>%1 liegt zwischen den Werten, die %2 annehmen kann: %3 oder %4</translation>
     </message>
@@ -3018,85 +3018,95 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="50"/>
         <source>Station error</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="52"/>
         <source>Port error</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="54"/>
         <source>Feeder error</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="56"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="58"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="54"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="60"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="56"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="62"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="58"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="64"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="60"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="66"/>
         <source>Tool change</source>
         <translation>Werkzeugwechsel</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="62"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="68"/>
         <source>Joint</source>
         <translation>Lötstelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="64"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="70"/>
         <source>Profile apply</source>
         <translation>Profil angewendet</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/events/eventlog.cpp" line="72"/>
+        <source>Work context</source>
+        <translation>Arbeitskontext</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/events/eventlog.cpp" line="74"/>
+        <source>Journal</source>
+        <translation>Journal</translation>
     </message>
 </context>
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="108"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="108"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="110"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="110"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="112"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="112"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="114"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="114"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="116"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="116"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
     </message>
@@ -3104,7 +3114,7 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventtext.cpp" line="16"/>
+        <location filename="../lib/model/events/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n-mal, bis %2)</numerusform>
@@ -3115,17 +3125,17 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="82"/>
+        <location filename="../lib/model/device/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="100"/>
+        <location filename="../lib/model/device/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 hat keinen Befehl %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="116"/>
+        <location filename="../lib/model/device/feedermodel.cpp" line="116"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -3133,87 +3143,87 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>FrameComposer</name>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="40"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="40"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 enthält das Datenfeld %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="43"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="43"/>
         <source>A write needs a data field: %1.</source>
         <translation>Ein Schreibbefehl braucht ein Datenfeld: %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="53"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="53"/>
         <source>On the wire this value is written %1.</source>
         <translation>Auf der Leitung wird dieser Wert als %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="70"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="70"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Unbekannte Gerätefamilie: der Katalog kann dieses Telegramm nicht prüfen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="78"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 ist im Katalog kein Schreibbefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="79"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="79"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 ist im Katalog kein Lesebefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="82"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="82"/>
         <source>Did you mean %1?</source>
         <translation>Meinten Sie %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="83"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="83"/>
         <source>It is sent as typed.</source>
         <translation>Es wird unverändert gesendet.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="88"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="88"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Lesebefehle haben kein Datenfeld; das Gerät kann dieses Telegramm ablehnen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="95"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="95"/>
         <source>Dangerous: %1</source>
         <translation>Gefährlich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="99"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="99"/>
         <source>Catalog check: %1</source>
         <translation>Katalogprüfung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="113"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="113"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="156"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="156"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="173"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="173"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="179"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="179"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="184"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="184"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="214"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
@@ -3221,7 +3231,7 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="216"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
@@ -3540,17 +3550,17 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="114"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="115"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>Lötstelle zu tief: die Lötspitze fiel %1 K unter den Sollwert (Grenze %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="120"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="121"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>Lötstelle langsam erholt: %1 s (Grenze %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="122"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="123"/>
         <source>joint did not recover within %1 s</source>
         <translation>Lötstelle hat sich in %1 s nicht erholt</translation>
     </message>
@@ -3722,53 +3732,53 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="240"/>
         <source>The broker %1 refused the message: %2.</source>
         <translation>Der Broker %1 hat die Nachricht abgelehnt: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="285"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="293"/>
         <source>&apos;%1&apos; is not a topic a message can be published to.</source>
         <translation>„%1“ ist kein Topic, an das eine Nachricht veröffentlicht werden kann.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="287"/>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="314"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="295"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="322"/>
         <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
         <translation>QoS %1 gibt es nicht; MQTT kennt 0, 1 und 2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="290"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="298"/>
         <source>Not connected to the broker %1: the message to %2 is dropped.</source>
         <translation>Nicht mit dem Broker %1 verbunden: die Nachricht an %2 wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="294"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="302"/>
         <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
         <translation>%1 Nachrichten warten darauf, vom Broker %2 angenommen zu werden: die Nachricht an %3 wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="304"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="312"/>
         <source>The message to %1 was not sent: %2</source>
         <translation>Die Nachricht an %1 wurde nicht gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="312"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
         <source>&apos;%1&apos; is not a valid subscription filter.</source>
         <translation>„%1“ ist kein gültiger Abonnement-Filter.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="323"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="331"/>
         <source>The subscription to %1 was not sent: %2</source>
         <translation>Das Abonnement von %1 wurde nicht gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="330"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="338"/>
         <source>There is no subscription to %1.</source>
         <translation>Es gibt kein Abonnement von %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="338"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="346"/>
         <source>The subscription to %1 was not ended: %2</source>
         <translation>Das Abonnement von %1 wurde nicht beendet: %2</translation>
     </message>
@@ -3966,94 +3976,94 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="71"/>
+        <location filename="../lib/model/device/parameter.cpp" line="62"/>
         <source>read-only</source>
         <translation>schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="76"/>
+        <location filename="../lib/model/device/parameter.cpp" line="67"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="80"/>
+        <location filename="../lib/model/device/parameter.cpp" line="71"/>
         <source> in steps of %1 %2</source>
         <translation> in Schritten von %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="87"/>
+        <location filename="../lib/model/device/parameter.cpp" line="78"/>
         <source>, or %1</source>
         <translation>, oder %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="93"/>
-        <location filename="../lib/model/parameter.cpp" line="129"/>
+        <location filename="../lib/model/device/parameter.cpp" line="84"/>
+        <location filename="../lib/model/device/parameter.cpp" line="120"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="102"/>
+        <location filename="../lib/model/device/parameter.cpp" line="93"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 ist für %2 nicht zulässig: zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="108"/>
+        <location filename="../lib/model/device/parameter.cpp" line="99"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="114"/>
-        <location filename="../lib/model/parameter.cpp" line="242"/>
+        <location filename="../lib/model/device/parameter.cpp" line="105"/>
+        <location filename="../lib/model/device/parameter.cpp" line="233"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="132"/>
+        <location filename="../lib/model/device/parameter.cpp" line="123"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="192"/>
+        <location filename="../lib/model/device/parameter.cpp" line="183"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="205"/>
+        <location filename="../lib/model/device/parameter.cpp" line="196"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="206"/>
+        <location filename="../lib/model/device/parameter.cpp" line="197"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="264"/>
+        <location filename="../lib/model/device/parameter.cpp" line="255"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="267"/>
+        <location filename="../lib/model/device/parameter.cpp" line="258"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="290"/>
+        <location filename="../lib/model/device/parameter.cpp" line="280"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="305"/>
+        <location filename="../lib/model/device/parameter.cpp" line="287"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="318"/>
+        <location filename="../lib/model/device/parameter.cpp" line="300"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="336"/>
+        <location filename="../lib/model/device/parameter.cpp" line="318"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -4124,78 +4134,78 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>PortModel</name>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="29"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="29"/>
         <source>Working</source>
         <translation>In Betrieb</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="31"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="31"/>
         <source>Stand</source>
         <translation>In der Ablage</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="33"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="33"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="35"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="35"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="43"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="43"/>
         <source>Cooling</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="45"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="45"/>
         <source>Suction</source>
         <translation>Absaugung</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="47"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="47"/>
         <source>Motor forward</source>
         <translation>Motor vorwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="49"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="49"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="71"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="71"/>
         <source>the tip went above the high alarm limit: if the selected temperature was just lowered, wait for the tip to cool; check that the tip suits the tool and the high alarm limit (Settings, Alarms)</source>
         <translation>die Lötspitze lag über der oberen Alarmgrenze: wurde die gewählte Temperatur gerade gesenkt, abwarten, bis die Spitze abgekühlt ist; prüfen, ob die Spitze zum Werkzeug passt, und die obere Alarmgrenze (Einstellungen, Alarme)</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="76"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="76"/>
         <source>the tip fell below the low alarm limit: the joint may draw more heat than the tip gives (a larger tip), the tip may be worn or not tinned; check the low alarm limit (Settings, Alarms)</source>
         <translation>die Lötspitze fiel unter die untere Alarmgrenze: die Lötstelle braucht vielleicht mehr Wärme, als die Spitze liefert (eine größere Spitze), oder die Spitze ist verschlissen oder nicht verzinnt; die untere Alarmgrenze prüfen (Einstellungen, Alarme)</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="122"/>
-        <location filename="../lib/model/portmodel.cpp" line="137"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="122"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="137"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="60"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="60"/>
         <source>High temperature</source>
         <translation>Übertemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="62"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="62"/>
         <source>Low temperature</source>
         <translation>Untertemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="63"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="63"/>
         <source>None</source>
         <translation>Keiner</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="198"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="198"/>
         <source>this port has no %1 command</source>
         <translation>dieser Port hat keinen Befehl %1</translation>
     </message>
@@ -4203,27 +4213,27 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>ProblemLevel</name>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="44"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="44"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="46"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="46"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="48"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="48"/>
         <source>Info</source>
         <translation>Info</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="50"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="50"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="52"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="52"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
@@ -4231,100 +4241,100 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="113"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="113"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: keine Einstellung von %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="118"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="118"/>
         <source>%1: &apos;%2&apos; is not a valid data field</source>
         <translation>%1: &apos;%2&apos; ist kein gültiges Datenfeld</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="220"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="123"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="131"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="131"/>
         <source>%1 bytes; a profile is at most %2</source>
         <translation>%1 Bytes; ein Profil hat höchstens %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="145"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="145"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="158"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="158"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="169"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="169"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="177"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="177"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="184"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="184"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="199"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="199"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="211"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="211"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="216"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="216"/>
         <source>%1 is %2</source>
         <translation>%1 hat %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="236"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="236"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="141"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="141"/>
         <source>not a valid JSON file: %1</source>
         <translation>keine gültige JSON-Datei: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="152"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="129"/>
+        <location filename="../lib/model/profiles/profilejson.cpp" line="129"/>
         <source>a NUL byte at byte %1</source>
         <translation>ein NUL-Byte bei Byte %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="130"/>
+        <location filename="../lib/model/profiles/profilejson.cpp" line="130"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>Steuerzeichen 0x%1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="161"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="161"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>Profilschema %1 wird nicht unterstützt (diese Version liest die Schemas %2 bis %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="188"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="188"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;, oder ein Objekt mit einem in &quot;raw&quot; (und Text in &quot;name&quot; und &quot;value&quot;)</translation>
     </message>
@@ -4332,37 +4342,37 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="33"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="33"/>
         <source>refused, nothing was written: %1</source>
         <translation>abgelehnt, nichts wurde geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="37"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="37"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="40"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="40"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>geändert %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="42"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="42"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FEHLER %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="45"/>
         <source>would send %1</source>
         <translation>würde %1 senden</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="50"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="50"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="61"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="61"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n Unterschied</numerusform>
@@ -4370,64 +4380,64 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="62"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="62"/>
         <source>%1 would change, %2 already right</source>
         <translation>%1 würden geändert, %2 bereits richtig</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="65"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="65"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="113"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="113"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="118"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="118"/>
         <source>monitor-only mode is on</source>
         <translation>der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="179"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="179"/>
         <source>reading the device</source>
         <translation>Gerät wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="241"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="241"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="244"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="244"/>
         <source>unreadable value</source>
         <translation>unlesbarer Wert</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="303"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="303"/>
         <source>profile %1 applied: %2 changed, %3 failed, %4 already right%5</source>
         <translation>Profil %1 angewendet: %2 geändert, %3 fehlgeschlagen, %4 schon richtig%5</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="308"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="308"/>
         <source> (cancelled)</source>
         <translation> (abgebrochen)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="85"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="85"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>das Profil würde die Grenzen seiner Einstellungen verletzen (MIT ≤ MAT, MIT ≤ ausgewählte Temperatur ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="106"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="106"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>keine der Einstellungen des Profils gibt es an diesem %1 (übersprungen: %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="53"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="53"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n übersprungen</numerusform>
@@ -4435,12 +4445,12 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="134"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="134"/>
         <source>this %1 has no such setting</source>
         <translation>dieses %1 hat keine solche Einstellung</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="47"/>
         <source>skipped %1 %2: %3</source>
         <translation>übersprungen %1 %2: %3</translation>
     </message>
@@ -4448,27 +4458,27 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>ProfileLimits</name>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="64"/>
         <source>in the profile</source>
         <translation>im Profil</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="65"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="65"/>
         <source>on the device now</source>
         <translation>jetzt am Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="66"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="66"/>
         <source>%1 %2 (%3)</source>
         <translation>%1 %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="84"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="84"/>
         <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
         <translation>%1 ist unbekannt (das Gerät hat nicht geantwortet), daher lässt sich %2 nicht dagegen prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="92"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="92"/>
         <source>%1 is above %2</source>
         <translation>%1 liegt über %2</translation>
     </message>
@@ -4476,22 +4486,22 @@ geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen; 4 keine gült
 <context>
     <name>ProfileRequest</name>
     <message>
-        <location filename="../lib/model/profilerequest.cpp" line="37"/>
+        <location filename="../lib/model/profiles/profilerequest.cpp" line="37"/>
         <source>&quot;request_id&quot; must be text of at most %1 characters, without control characters</source>
         <translation>&quot;request_id&quot; muss Text mit höchstens %1 Zeichen sein, ohne Steuerzeichen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilerequest.cpp" line="53"/>
+        <location filename="../lib/model/profiles/profilerequest.cpp" line="53"/>
         <source>the request is %1; nothing will be written</source>
         <translation>die Anfrage hat %1; nichts wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilerequest.cpp" line="72"/>
+        <location filename="../lib/model/profiles/profilerequest.cpp" line="72"/>
         <source>given more than once, so which one is meant is unclear: %1; nothing will be written</source>
         <translation>mehr als einmal angegeben, daher ist unklar, welches gemeint ist: %1; nichts wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilerequest.cpp" line="79"/>
+        <location filename="../lib/model/profiles/profilerequest.cpp" line="79"/>
         <source>&quot;profile&quot; must be a profile: an object as tipscope-cli profile save writes it</source>
         <translation>&quot;profile&quot; muss ein Profil sein: ein Objekt, wie tipscope-cli profile save es schreibt</translation>
     </message>
@@ -4648,8 +4658,8 @@ Dauerhaft mit dieser udev-Regel:
     <name>Session</name>
     <message>
         <location filename="../lib/model/session.cpp" line="30"/>
-        <location filename="../lib/model/session.cpp" line="131"/>
-        <location filename="../lib/model/session.cpp" line="134"/>
+        <location filename="../lib/model/session.cpp" line="129"/>
+        <location filename="../lib/model/session.cpp" line="132"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
@@ -4659,39 +4669,39 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Aufzeichnung %1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="130"/>
-        <location filename="../lib/model/session.cpp" line="143"/>
-        <location filename="../lib/model/session.cpp" line="151"/>
+        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="141"/>
+        <location filename="../lib/model/session.cpp" line="149"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="167"/>
+        <location filename="../lib/model/session.cpp" line="165"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="218"/>
+        <location filename="../lib/model/session.cpp" line="216"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="230"/>
+        <location filename="../lib/model/session.cpp" line="228"/>
         <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät ließ sich erkennen; zurück kam: %2 (Robotermodus aus? falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="235"/>
+        <location filename="../lib/model/session.cpp" line="233"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="243"/>
+        <location filename="../lib/model/session.cpp" line="241"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -4699,7 +4709,7 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="223"/>
         <source>connected to %1, but %2</source>
         <translation>mit %1 verbunden, aber %2</translation>
     </message>
@@ -4707,12 +4717,12 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SettingName</name>
     <message>
-        <location filename="../lib/model/settingname.cpp" line="22"/>
+        <location filename="../lib/model/device/settingname.cpp" line="22"/>
         <source>tool %1</source>
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/settingname.cpp" line="33"/>
+        <location filename="../lib/model/device/settingname.cpp" line="33"/>
         <source>port %1</source>
         <translation>Port %1</translation>
     </message>
@@ -4720,28 +4730,28 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>StationModel</name>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="56"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="62"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="75"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="81"/>
         <source>%1 does not support %2</source>
         <translation>%1 unterstützt %2 nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="82"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="88"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 kann nicht im Speicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="118"/>
-        <location filename="../lib/model/stationmodel.cpp" line="122"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="126"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="131"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="136"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="146"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -4749,157 +4759,157 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="176"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="176"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="178"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="178"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="117"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="117"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="118"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="118"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="119"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="119"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="168"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="168"/>
         <source>Workspace line %1</source>
         <translation>Linie %1 des Arbeitsbereichs</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="169"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="169"/>
         <source>Workspace line %1 (%2)</source>
         <translation>Linie %1 des Arbeitsbereichs (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="192"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="192"/>
         <source>Recent events of %1:</source>
         <translation>Letzte Ereignisse von %1:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="201"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="201"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="32"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="32"/>
         <source>Device %1</source>
         <translation>Gerät %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="37"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="37"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="39"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="39"/>
         <source>, software %1</source>
         <translation>, Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="46"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="46"/>
         <source>Joints of the last 24 hours: not read: %1</source>
         <translation>Lötstellen der letzten 24 Stunden: nicht gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="48"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="48"/>
         <source>Joints from %1 to %2:</source>
         <translation>Lötstellen von %1 bis %2:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="53"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="53"/>
         <source>  none</source>
         <translation>  keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="60"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="60"/>
         <source>  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, %7 incomplete</source>
         <translation>  %1, Port %2: %3 Lötstellen: %4 in Ordnung, %5 langsame Erholung, %6 zu tief, %7 unvollständig</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="68"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="68"/>
         <source>; recovery median %1 ms, 95th percentile %2 ms</source>
         <translation>; Erholzeit Median %1 ms, 95. Perzentil %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="81"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="81"/>
         <source>Journal: %1</source>
         <translation>Journal: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="83"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="83"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="84"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="84"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="86"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="86"/>
         <source>not yet, opening</source>
         <translation>noch nicht, wird geöffnet</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="87"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="87"/>
         <source>no, closed</source>
         <translation>nein, geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="89"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="89"/>
         <source>  writing: %1</source>
         <translation>  schreibt: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="90"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="90"/>
         <source>  writing: %1: %2</source>
         <translation>  schreibt: %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="92"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="92"/>
         <source>  lost: %1 records (%2)</source>
         <translation>  verloren: %1 Einträge (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="95"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="95"/>
         <source>  not read: %1</source>
         <translation>  nicht gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="98"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="98"/>
         <source>  %1 joints and %2 events, %3 and %4 of them not yet published; %5 waiting in memory</source>
         <translation>  %1 Lötstellen und %2 Ereignisse, davon %3 und %4 noch nicht veröffentlicht; %5 warten im Speicher</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="104"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="104"/>
         <source>  from %1 to %2</source>
         <translation>  von %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="107"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="107"/>
         <source>  kept without a time limit; %1 bytes on disk</source>
         <translation>  ohne Zeitgrenze aufbewahrt; %1 Byte auf der Festplatte</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="109"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="109"/>
         <source>  kept for %1 days; %2 bytes on disk</source>
         <translation>  %1 Tage aufbewahrt; %2 Byte auf der Festplatte</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="135"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="135"/>
         <source>  What to check:</source>
         <translation>  Was zu prüfen ist:</translation>
     </message>
@@ -5002,17 +5012,17 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkContextJson</name>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="20"/>
+        <location filename="../lib/model/context/workcontextjson.cpp" line="20"/>
         <source>%1 has %2 characters; at most %3 are kept</source>
         <translation>%1 hat %2 Zeichen; höchstens %3 werden gespeichert</translation>
     </message>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="27"/>
+        <location filename="../lib/model/context/workcontextjson.cpp" line="27"/>
         <source>%1 holds a control character (%2) at character %3</source>
         <translation>%1 enthält ein Steuerzeichen (%2) an Zeichen %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="53"/>
+        <location filename="../lib/model/context/workcontextjson.cpp" line="53"/>
         <source>%1 must be text</source>
         <translation>%1 muss Text sein</translation>
     </message>
@@ -5222,44 +5232,44 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::BoardReportDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="25"/>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="116"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="26"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="130"/>
         <source>Board report</source>
         <translation>Platinenbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="34"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="35"/>
         <source>Every joint the journal keeps for the board, its result, its tools&apos; wear and the events while it was made, as a PDF to sign.</source>
         <translation>Jede Lötstelle, die das Journal für die Platine behält, ihr Ergebnis, der Verschleiß ihrer Spitzen und die Ereignisse während der Fertigung, als PDF zum Unterschreiben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="40"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="41"/>
         <source>Board serial:</source>
         <translation>Platinen-Seriennummer:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="43"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="44"/>
         <source>Write PDF…</source>
         <translation>PDF schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="57"/>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="111"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="61"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="125"/>
         <source>Give the serial of a board.</source>
         <translation>Die Seriennummer einer Platine angeben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="78"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="82"/>
         <source>Reading the journal for board %1…</source>
         <translation>Das Journal wird für Platine %1 gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="90"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="95"/>
         <source>The journal has no board %1: no joint or event carries that serial.</source>
         <translation>Das Journal kennt keine Platine %1: keine Lötstelle und kein Ereignis trägt diese Seriennummer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="118"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="132"/>
         <source>PDF documents (*.pdf)</source>
         <translation>PDF-Dokumente (*.pdf)</translation>
     </message>
@@ -5275,7 +5285,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="502"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="508"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -5287,38 +5297,38 @@ Dauerhaft mit dieser udev-Regel:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
-        <location filename="../app/gui/charts/chartspage.h" line="69"/>
+        <location filename="../app/gui/charts/chartspage.h" line="70"/>
         <location filename="../app/gui/screenshots.cpp" line="231"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="108"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="106"/>
         <source>Values under the cursor</source>
         <translation>Werte unter dem Mauszeiger</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="127"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="128"/>
         <source>&amp;Measurements</source>
         <translation>&amp;Messwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="131"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="132"/>
         <source>Heat-ups, recoveries and min/max/mean of the visible window</source>
         <translation>Aufheizen, Erholungen und Min./Max./Mittel des sichtbaren Zeitfensters</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="136"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="137"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>Toleranzband für A&amp;ufheizen und Erholung ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="139"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="140"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Toleranzband um den Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="153"/>
         <source>Measurements of the visible window</source>
         <translation>Messungen im sichtbaren Zeitfenster</translation>
     </message>
@@ -5328,62 +5338,62 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Zeigen Sie auf ein Diagramm, um alle Reihen zu diesem Zeitpunkt abzulesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="197"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="196"/>
         <source>Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
         <translation>Mausrad: Zoom · Ziehen: Verschieben · Umschalt+Ziehen: auf einen Bereich zoomen · Doppelklick: Zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="174"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="175"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="177"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
         <source>%1 — feeder</source>
         <translation>%1 — Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
         <source>%1 — all ports</source>
         <translation>%1 — alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>Temperature (%1)</source>
         <translation>Temperatur (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>Power (%)</source>
         <translation>Leistung (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="300"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="301"/>
         <source>No samples in this window</source>
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="49"/>
         <source>device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="52"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="51"/>
         <source>%1 · %2 · %3: %4</source>
         <translation>%1 · %2 · %3: %4</translation>
     </message>
@@ -5528,17 +5538,17 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="79"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="78"/>
         <source>P%1</source>
         <translation>P%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="95"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="94"/>
         <source>High alarm</source>
         <translation>Alarm hoch</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="98"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="97"/>
         <source>Low alarm</source>
         <translation>Alarm tief</translation>
     </message>
@@ -7024,124 +7034,124 @@ Zurücksetzen?</translation>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="81"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>Data field</source>
         <translation>Datenfeld</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="89"/>
         <source>&amp;Send frame</source>
         <translation>Telegramm &amp;senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
         <source>Send frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
         <source>Frame to be sent</source>
         <translation>Zu sendendes Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
         <source>Catalog check</source>
         <translation>Katalogprüfung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Raw bytes in hex</source>
         <translation>Rohbytes hexadezimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="103"/>
         <source>Send ra&amp;w hex</source>
         <translation>Roh-He&amp;x senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="104"/>
         <source>Send raw hex</source>
         <translation>Roh-Hex senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="104"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
         <source>Raw bytes check</source>
         <translation>Prüfung der Rohbytes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="105"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="107"/>
         <source>Nothing sent yet.</source>
         <translation>Noch nichts gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="108"/>
         <source>Outcome of the last send</source>
         <translation>Ergebnis des letzten Sendens</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="115"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="117"/>
         <source>&amp;Device</source>
         <translation>Ger&amp;ät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="117"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>&amp;Header</source>
         <translation>&amp;Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>C&amp;ommand</source>
         <translation>Befeh&amp;l</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="123"/>
         <source>D&amp;ata</source>
         <translation>Date&amp;n</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="126"/>
         <source>Frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="127"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="129"/>
         <source>&amp;Raw hex</source>
         <translation>&amp;Roh-Hex</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="131"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="133"/>
         <source>Last send</source>
         <translation>Letztes Senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="240"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="242"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Diese Bytes genau wie eingegeben senden; die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="213"/>
         <source>(nothing to send)</source>
         <translation>(nichts zu senden)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="217"/>
         <source>none for reads</source>
         <translation>keine (Lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="217"/>
         <source>e.g. 00350</source>
         <translation>z. B. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="229"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Dieses Telegramm einmal wie angezeigt senden (ohne Wiederholungen; Katalogwarnungen halten es nicht auf). Die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="264"/>
         <source>Not sent: %1</source>
         <translation>Nicht gesendet: %1</translation>
     </message>
@@ -7991,73 +8001,73 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="207"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
         <source>no recovery</source>
         <translation>keine Erholung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="209"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="230"/>
         <source>last joint %1, %2</source>
         <translation>letzte Lötstelle %1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="236"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="259"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="237"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="260"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="238"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="261"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="263"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="289"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="267"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="269"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="278"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="281"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="301"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="304"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Fehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="286"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="309"/>
         <source>status: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="288"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="311"/>
         <source>alarm: %1</source>
         <translation>Alarm: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="256"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="279"/>
         <source>Not connected: last read %1</source>
         <translation>Nicht verbunden: zuletzt gelesen %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="258"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="281"/>
         <source>Not connected: not read yet</source>
         <translation>Nicht verbunden: noch nicht gelesen</translation>
     </message>
@@ -8504,123 +8514,123 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="233"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="242"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="42"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Zurücknehmen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="43"/>
         <source>Save to station &amp;memory</source>
         <translation>Im Stations&amp;speicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>Die eingestellte Temperatur ist flüchtig: W-NVS speichert sie, damit sie einen Neustart übersteht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
         <source>Station actions</source>
         <translation>Stationsaktionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
         <source>Profiles</source>
         <translation>Profile</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="53"/>
         <source>Save device settings to a profile…</source>
         <translation>Geräteeinstellungen in einem Profil speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="52"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="55"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Profil öffnen (vergleichen, Probelauf, anwenden)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="55"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="64"/>
         <source>Port:</source>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="154"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Verbinden Sie sich und wählen Sie ein Gerät, um seine Einstellungen zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="157"/>
         <source>Port %1 (%2)</source>
         <translation>Port %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="169"/>
         <source>Station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="167"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="176"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="177"/>
         <source>Alarms, port %1</source>
         <translation>Alarme, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="179"/>
         <source>Tool %1, port %2</source>
         <translation>Werkzeug %1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="172"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="181"/>
         <source> (connected)</source>
         <translation> (angeschlossen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="176"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="185"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dosierung (Drahtvorschub der ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="193"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="233"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="242"/>
         <source>&amp;Apply (%1)</source>
         <translation>&amp;Anwenden (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="300"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="309"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="321"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="319"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="328"/>
         <source>%1
 
 %2
@@ -8633,27 +8643,27 @@ Do you want to continue?</source>
 Möchten Sie fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="334"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="346"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="349"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="361"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="335"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="344"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="341"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="350"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="385"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="375"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="381"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="390"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
@@ -8663,27 +8673,27 @@ Möchten Sie fortfahren?</translation>
         <translation>Einstellungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="242"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="251"/>
         <source>⚠ Not connected: the greyed values are as last read (the time is beside each). Apply, Save to station memory, Station actions and Profiles wait for the line.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt gelesen (die Zeit steht daneben). Anwenden, Im Stationsspeicher sichern, Stationsaktionen und Profile warten auf die Leitung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="246"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="255"/>
         <source>Monitor-only mode is on: Apply, Save to station memory and Station actions are off, nothing is written.</source>
         <translation>Nur-Beobachten ist an: Anwenden, Im Stationsspeicher sichern und Stationsaktionen sind aus, nichts wird geschrieben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="347"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="356"/>
         <source>A comment for the profile (optional), e.g. what it is for or who set it:</source>
         <translation>Ein Kommentar zum Profil (optional), z. B. wofür es ist oder wer es eingestellt hat:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="367"/>
         <source>no device is selected</source>
         <translation>kein Gerät ausgewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="363"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="372"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profil gespeichert: %n Einstellung von %1 in %2</numerusform>
@@ -8796,7 +8806,7 @@ Möchten Sie fortfahren?</translation>
         <translation>das Gerät an Adresse %1 hat sich nicht identifiziert (%2): %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="103"/>
+        <location filename="../lib/link/discovery.cpp" line="100"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -8804,7 +8814,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="107"/>
+        <location filename="../lib/link/discovery.cpp" line="104"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n Antwort mit falscher Prüfsumme oder falschem Format</numerusform>
@@ -8812,7 +8822,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="109"/>
+        <location filename="../lib/link/discovery.cpp" line="106"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n Rahmen von einer nicht gefragten Adresse</numerusform>
@@ -8820,7 +8830,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="111"/>
+        <location filename="../lib/link/discovery.cpp" line="108"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n Byte, das kein Rahmen war</numerusform>
@@ -8932,22 +8942,22 @@ Möchten Sie fortfahren?</translation>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="222"/>
+        <location filename="../lib/link/requestqueue.cpp" line="221"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="256"/>
+        <location filename="../lib/link/requestqueue.cpp" line="255"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="265"/>
+        <location filename="../lib/link/requestqueue.cpp" line="264"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="269"/>
+        <location filename="../lib/link/requestqueue.cpp" line="268"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
@@ -8957,12 +8967,12 @@ Möchten Sie fortfahren?</translation>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="319"/>
+        <location filename="../lib/link/requestqueue.cpp" line="318"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="335"/>
+        <location filename="../lib/link/requestqueue.cpp" line="334"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -8970,7 +8980,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="338"/>
+        <location filename="../lib/link/requestqueue.cpp" line="337"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
@@ -8978,17 +8988,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="341"/>
+        <location filename="../lib/link/requestqueue.cpp" line="340"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="413"/>
+        <location filename="../lib/link/requestqueue.cpp" line="412"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="415"/>
+        <location filename="../lib/link/requestqueue.cpp" line="414"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>
@@ -9009,17 +9019,17 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::SimTransport</name>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="24"/>
+        <location filename="../lib/link/simtransport.cpp" line="26"/>
         <source>the simulated line is unplugged</source>
         <translation>die simulierte Leitung ist abgezogen</translation>
     </message>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="51"/>
+        <location filename="../lib/link/simtransport.cpp" line="53"/>
         <source>demo (simulated %1)</source>
         <translation>Demo (simulierte %1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="62"/>
+        <location filename="../lib/link/simtransport.cpp" line="64"/>
         <source>the simulated cable was pulled</source>
         <translation>das simulierte Kabel wurde abgezogen</translation>
     </message>
@@ -9045,37 +9055,37 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::model::ConsoleSender</name>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="15"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="15"/>
         <source>%1: answered %2 after %L3 ms</source>
         <translation>%1: Antwort %2 nach %L3 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="19"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="19"/>
         <source>%1: refused, %2</source>
         <translation>%1: abgelehnt, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="21"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="21"/>
         <source>%1: no answer (timeout)</source>
         <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="23"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="23"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="52"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="52"/>
         <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: W-Telegramme werden nicht gesendet, Lesebefehle schon.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="58"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="58"/>
         <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: Bytes, die kein gültiges R-Telegramm sind, könnten ein Schreibbefehl sein und werden daher nicht gesendet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="69"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n Rohbyte</numerusform>
@@ -9083,17 +9093,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="75"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="75"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: nicht gesendet, nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="79"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="79"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="91"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="91"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>

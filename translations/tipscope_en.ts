@@ -4,7 +4,7 @@
 <context>
     <name>AgentMain</name>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="41"/>
+        <location filename="../app/agent/main.cpp" line="42"/>
         <source>site %1, %n line(s) (%2), no MQTT broker: CFX only</source>
         <translation>
             <numerusform>site %1, %n line (%2), no MQTT broker: CFX only</numerusform>
@@ -12,7 +12,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="44"/>
+        <location filename="../app/agent/main.cpp" line="45"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>site %1, %n line (%2), broker %3:%4%5 %6</numerusform>
@@ -23,7 +23,7 @@
 <context>
     <name>CliCommands</name>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="53"/>
+        <location filename="../app/cli/clicommands.cpp" line="55"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n raw byte, not a frame (%1)</numerusform>
@@ -56,7 +56,7 @@
 <context>
     <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventtext.cpp" line="16"/>
+        <location filename="../lib/model/events/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n time, until %2)</numerusform>
@@ -67,7 +67,7 @@
 <context>
     <name>FrameComposer</name>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="214"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, a valid frame: %1</numerusform>
@@ -75,7 +75,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="216"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
@@ -127,7 +127,7 @@
 <context>
     <name>ProfileApplier</name>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="61"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="61"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -135,7 +135,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="53"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="53"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n skipped</numerusform>
@@ -168,7 +168,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="243"/>
+        <location filename="../lib/model/session.cpp" line="241"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -179,7 +179,7 @@
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="502"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="508"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… and %n more</numerusform>
@@ -315,7 +315,7 @@
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="363"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="372"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profile saved: %n setting of %1 in %2</numerusform>
@@ -326,7 +326,7 @@
 <context>
     <name>tipscope::link::Discovery</name>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="103"/>
+        <location filename="../lib/link/discovery.cpp" line="100"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -334,7 +334,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="107"/>
+        <location filename="../lib/link/discovery.cpp" line="104"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n answer with a bad block check or format</numerusform>
@@ -342,7 +342,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="109"/>
+        <location filename="../lib/link/discovery.cpp" line="106"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n frame from an address not asked</numerusform>
@@ -350,7 +350,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="111"/>
+        <location filename="../lib/link/discovery.cpp" line="108"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n byte that was no frame</numerusform>
@@ -361,7 +361,7 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="335"/>
+        <location filename="../lib/link/requestqueue.cpp" line="334"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
@@ -369,7 +369,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="338"/>
+        <location filename="../lib/link/requestqueue.cpp" line="337"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>%n byte of garbage came instead</numerusform>
@@ -380,7 +380,7 @@
 <context>
     <name>tipscope::model::ConsoleSender</name>
     <message numerus="yes">
-        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="69"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n raw byte</numerusform>

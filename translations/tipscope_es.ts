@@ -4,22 +4,22 @@
 <context>
     <name>Action</name>
     <message>
-        <location filename="../lib/model/action.cpp" line="28"/>
+        <location filename="../lib/model/device/action.cpp" line="28"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="30"/>
+        <location filename="../lib/model/device/action.cpp" line="30"/>
         <source>%1 needs an explicit confirmation: %2</source>
         <translation>%1 necesita una confirmación explícita: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="32"/>
+        <location filename="../lib/model/device/action.cpp" line="32"/>
         <source>%1 is already running</source>
         <translation>%1 ya está en curso</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="43"/>
+        <location filename="../lib/model/device/action.cpp" line="43"/>
         <source>%1 done</source>
         <translation>%1 completado</translation>
     </message>
@@ -170,22 +170,22 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="32"/>
+        <location filename="../app/agent/main.cpp" line="33"/>
         <source>without a user name</source>
         <translation>sin nombre de usuario</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="34"/>
+        <location filename="../app/agent/main.cpp" line="35"/>
         <source>as %1, without a password</source>
         <translation>como %1, sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="35"/>
+        <location filename="../app/agent/main.cpp" line="36"/>
         <source>as %1, password from the %2</source>
         <translation>como %1, contraseña de %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="41"/>
+        <location filename="../app/agent/main.cpp" line="42"/>
         <source>site %1, %n line(s) (%2), no MQTT broker: CFX only</source>
         <translation>
             <numerusform>planta %1, %n línea (%2), sin broker MQTT: solo CFX</numerusform>
@@ -193,7 +193,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="44"/>
+        <location filename="../app/agent/main.cpp" line="45"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>planta %1, %n línea (%2), broker %3:%4%5 %6</numerusform>
@@ -201,67 +201,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="48"/>
+        <location filename="../app/agent/main.cpp" line="49"/>
         <source> with TLS</source>
         <translation> con TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="60"/>
+        <location filename="../app/agent/main.cpp" line="64"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Ejecuta las líneas de un espacio de trabajo sin pantalla, guarda sus soldaduras y eventos en el diario y los publica en un broker MQTT.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="67"/>
+        <location filename="../app/agent/main.cpp" line="71"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>La configuración del agente (por omisión %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="68"/>
+        <location filename="../app/agent/main.cpp" line="72"/>
         <source>file</source>
         <translation>archivo</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="71"/>
+        <location filename="../app/agent/main.cpp" line="75"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Lee la configuración y su espacio de trabajo, indica lo que está mal y termina.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="78"/>
+        <location filename="../app/agent/main.cpp" line="82"/>
         <source>unexpected argument %1</source>
         <translation>argumento inesperado %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="94"/>
+        <location filename="../app/agent/main.cpp" line="98"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="98"/>
+        <location filename="../app/agent/main.cpp" line="102"/>
         <source>%1 is good: %2</source>
         <translation>%1 es correcta: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="110"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>configuración rechazada, se mantiene la actual: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="114"/>
+        <location filename="../app/agent/main.cpp" line="118"/>
         <source>reloading: %1</source>
         <translation>recargando: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="118"/>
+        <location filename="../app/agent/main.cpp" line="122"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 arrancando: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="123"/>
+        <location filename="../app/agent/main.cpp" line="127"/>
         <source>stopped: %1</source>
         <translation>detenido: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="126"/>
+        <location filename="../app/agent/main.cpp" line="130"/>
         <source>stopped</source>
         <translation>detenido</translation>
     </message>
@@ -2093,114 +2093,114 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="41"/>
+        <location filename="../app/cli/clicommands.cpp" line="43"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="65"/>
+        <location filename="../app/cli/clicommands.cpp" line="67"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="104"/>
+        <location filename="../app/cli/clicommands.cpp" line="106"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="117"/>
+        <location filename="../app/cli/clicommands.cpp" line="119"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="140"/>
+        <location filename="../app/cli/clicommands.cpp" line="144"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="145"/>
+        <location filename="../app/cli/clicommands.cpp" line="158"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="153"/>
+        <location filename="../app/cli/clicommands.cpp" line="164"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="159"/>
+        <location filename="../app/cli/clicommands.cpp" line="171"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="176"/>
+        <location filename="../app/cli/clicommands.cpp" line="187"/>
         <source>the device answered &apos;%1&apos;, which is no value</source>
         <translation>el equipo respondió &apos;%1&apos;, que no es un valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="197"/>
+        <location filename="../app/cli/clicommands.cpp" line="208"/>
         <source>tipscope-cli: refused, nothing was sent: %1 is bounded by %2, which could not be read: %3</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1 está limitado por %2, que no se pudo leer: %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="228"/>
+        <location filename="../app/cli/clicommands.cpp" line="239"/>
         <source>%1 (--force sends it anyway)</source>
         <translation>%1 (--force lo envía de todos modos)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="239"/>
+        <location filename="../app/cli/clicommands.cpp" line="250"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="248"/>
+        <location filename="../app/cli/clicommands.cpp" line="259"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="221"/>
+        <location filename="../app/cli/clicommands.cpp" line="232"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="224"/>
+        <location filename="../app/cli/clicommands.cpp" line="235"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="205"/>
-        <location filename="../app/cli/clicommands.cpp" line="278"/>
-        <location filename="../app/cli/clicommands.cpp" line="304"/>
+        <location filename="../app/cli/clicommands.cpp" line="216"/>
+        <location filename="../app/cli/clicommands.cpp" line="289"/>
+        <location filename="../app/cli/clicommands.cpp" line="315"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="295"/>
+        <location filename="../app/cli/clicommands.cpp" line="306"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="370"/>
+        <location filename="../app/cli/clicommands.cpp" line="381"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="393"/>
+        <location filename="../app/cli/clicommands.cpp" line="404"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="396"/>
+        <location filename="../app/cli/clicommands.cpp" line="407"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="398"/>
+        <location filename="../app/cli/clicommands.cpp" line="409"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="53"/>
+        <location filename="../app/cli/clicommands.cpp" line="55"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n byte en bruto, no es una trama (%1)</numerusform>
@@ -2797,117 +2797,117 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="102"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="118"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="250"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="252"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="252"/>
         <source>RX chunk</source>
         <translation>Bloque RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="254"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="258"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="266"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="266"/>
         <source>Read</source>
         <translation>Lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="268"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="268"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="270"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="270"/>
         <source>Answer</source>
         <translation>Respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="315"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="315"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="331"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="331"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="332"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="332"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="333"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="333"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="334"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="334"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="335"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="335"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="336"/>
+        <location filename="../lib/model/console/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -2915,22 +2915,22 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>DeviceIdentity</name>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="73"/>
+        <location filename="../lib/model/context/deviceidentity.cpp" line="73"/>
         <source>%1 at %2</source>
         <translation>%1 en la dirección %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
+        <location filename="../lib/model/context/deviceidentity.cpp" line="76"/>
         <source>software unknown</source>
         <translation>software desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="77"/>
+        <location filename="../lib/model/context/deviceidentity.cpp" line="77"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="78"/>
+        <location filename="../lib/model/context/deviceidentity.cpp" line="78"/>
         <source>%1 on %2, %3</source>
         <translation>%1 en %2, %3</translation>
     </message>
@@ -2938,53 +2938,53 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="69"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="69"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="70"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="70"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="74"/>
-        <location filename="../lib/model/devicemodel.cpp" line="157"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="74"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="157"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="217"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="217"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="119"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="119"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="143"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="143"/>
         <source>tool %1</source>
         <translation>herramienta %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="154"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="154"/>
         <source>%1, %2, port %3</source>
         <translation>%1, %2, puerto %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="160"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="160"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="203"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="203"/>
         <source>Monitor-only mode is on: nothing is written.</source>
         <translation>El modo solo monitorización está activo: no se escribe nada.</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="205"/>
+        <location filename="../lib/model/device/devicemodel.cpp" line="205"/>
         <source>Not connected: nothing can be sent until the line is back.</source>
         <translation>No conectado: no se puede enviar nada hasta que vuelva la línea.</translation>
     </message>
@@ -2992,17 +2992,17 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>DisplayUnits</name>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="81"/>
+        <location filename="../lib/model/device/displayunits.cpp" line="81"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>&apos;%1&apos; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="86"/>
+        <location filename="../lib/model/device/displayunits.cpp" line="86"/>
         <source>&apos;%1&apos; is far outside what %2 can take</source>
         <translation>&apos;%1&apos; está muy fuera de lo que admite %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="93"/>
+        <location filename="../lib/model/device/displayunits.cpp" line="93"/>
         <source>%1 lies between the values %2 can take: %3 or %4</source>
         <translation>%1 está entre los valores que admite %2: %3 o %4</translation>
     </message>
@@ -3018,85 +3018,95 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="50"/>
         <source>Station error</source>
         <translation>Error de estación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="52"/>
         <source>Port error</source>
         <translation>Error de puerto</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="54"/>
         <source>Feeder error</source>
         <translation>Error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="56"/>
         <source>Alarm</source>
         <translation>Alarma</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="58"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="54"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="60"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="56"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="62"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="58"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="64"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="60"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="66"/>
         <source>Tool change</source>
         <translation>Cambio de herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="62"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="68"/>
         <source>Joint</source>
         <translation>Soldadura</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="64"/>
+        <location filename="../lib/model/events/eventlog.cpp" line="70"/>
         <source>Profile apply</source>
         <translation>Aplicación de perfil</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/events/eventlog.cpp" line="72"/>
+        <source>Work context</source>
+        <translation>Contexto de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/events/eventlog.cpp" line="74"/>
+        <source>Journal</source>
+        <translation>Diario</translation>
     </message>
 </context>
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="108"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="108"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="110"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="110"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="112"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="112"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="114"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="114"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="116"/>
+        <location filename="../lib/model/events/eventhistorymodel.cpp" line="116"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
     </message>
@@ -3104,7 +3114,7 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventtext.cpp" line="16"/>
+        <location filename="../lib/model/events/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n vez, hasta %2)</numerusform>
@@ -3115,17 +3125,17 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="82"/>
+        <location filename="../lib/model/device/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="100"/>
+        <location filename="../lib/model/device/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 no tiene el comando %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="116"/>
+        <location filename="../lib/model/device/feedermodel.cpp" line="116"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -3133,87 +3143,87 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>FrameComposer</name>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="40"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="40"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 lleva el campo de datos %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="43"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="43"/>
         <source>A write needs a data field: %1.</source>
         <translation>Una escritura necesita un campo de datos: %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="53"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="53"/>
         <source>On the wire this value is written %1.</source>
         <translation>En la línea este valor se escribe %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="70"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="70"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="78"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="79"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="79"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="82"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="82"/>
         <source>Did you mean %1?</source>
         <translation>¿Quería decir %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="83"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="83"/>
         <source>It is sent as typed.</source>
         <translation>Se envía tal cual.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="88"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="88"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="95"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="95"/>
         <source>Dangerous: %1</source>
         <translation>Peligroso: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="99"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="99"/>
         <source>Catalog check: %1</source>
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="113"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="113"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="156"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="156"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="173"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="173"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="179"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="179"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="184"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="184"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="214"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, una trama válida: %1</numerusform>
@@ -3221,7 +3231,7 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="216"/>
+        <location filename="../lib/model/console/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
@@ -3540,17 +3550,17 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="114"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="115"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>soldadura demasiado profunda: la punta bajó %1 K por debajo de la consigna (límite %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="120"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="121"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>soldadura con recuperación lenta: %1 s (límite %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="122"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="123"/>
         <source>joint did not recover within %1 s</source>
         <translation>la soldadura no se recuperó en %1 s</translation>
     </message>
@@ -3722,53 +3732,53 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="240"/>
         <source>The broker %1 refused the message: %2.</source>
         <translation>El broker %1 rechazó el mensaje: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="285"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="293"/>
         <source>&apos;%1&apos; is not a topic a message can be published to.</source>
         <translation>«%1» no es un tema en el que se pueda publicar un mensaje.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="287"/>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="314"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="295"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="322"/>
         <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
         <translation>QoS %1 no existe; MQTT tiene 0, 1 y 2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="290"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="298"/>
         <source>Not connected to the broker %1: the message to %2 is dropped.</source>
         <translation>Sin conexión con el broker %1: se descarta el mensaje a %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="294"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="302"/>
         <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
         <translation>%1 mensajes esperan a que el broker %2 los acepte: se descarta el mensaje a %3.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="304"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="312"/>
         <source>The message to %1 was not sent: %2</source>
         <translation>No se envió el mensaje a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="312"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
         <source>&apos;%1&apos; is not a valid subscription filter.</source>
         <translation>«%1» no es un filtro de suscripción válido.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="323"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="331"/>
         <source>The subscription to %1 was not sent: %2</source>
         <translation>No se envió la suscripción a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="330"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="338"/>
         <source>There is no subscription to %1.</source>
         <translation>No hay ninguna suscripción a %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="338"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="346"/>
         <source>The subscription to %1 was not ended: %2</source>
         <translation>No se terminó la suscripción a %1: %2</translation>
     </message>
@@ -3966,94 +3976,94 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="71"/>
+        <location filename="../lib/model/device/parameter.cpp" line="62"/>
         <source>read-only</source>
         <translation>solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="76"/>
+        <location filename="../lib/model/device/parameter.cpp" line="67"/>
         <source>%1 to %2</source>
         <translation>de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="80"/>
+        <location filename="../lib/model/device/parameter.cpp" line="71"/>
         <source> in steps of %1 %2</source>
         <translation> en pasos de %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="87"/>
+        <location filename="../lib/model/device/parameter.cpp" line="78"/>
         <source>, or %1</source>
         <translation>, o %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="93"/>
-        <location filename="../lib/model/parameter.cpp" line="129"/>
+        <location filename="../lib/model/device/parameter.cpp" line="84"/>
+        <location filename="../lib/model/device/parameter.cpp" line="120"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="102"/>
+        <location filename="../lib/model/device/parameter.cpp" line="93"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 no está permitido para %2: se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="108"/>
+        <location filename="../lib/model/device/parameter.cpp" line="99"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="114"/>
-        <location filename="../lib/model/parameter.cpp" line="242"/>
+        <location filename="../lib/model/device/parameter.cpp" line="105"/>
+        <location filename="../lib/model/device/parameter.cpp" line="233"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="132"/>
+        <location filename="../lib/model/device/parameter.cpp" line="123"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="192"/>
+        <location filename="../lib/model/device/parameter.cpp" line="183"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="205"/>
+        <location filename="../lib/model/device/parameter.cpp" line="196"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="206"/>
+        <location filename="../lib/model/device/parameter.cpp" line="197"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="264"/>
+        <location filename="../lib/model/device/parameter.cpp" line="255"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="267"/>
+        <location filename="../lib/model/device/parameter.cpp" line="258"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="290"/>
+        <location filename="../lib/model/device/parameter.cpp" line="280"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="305"/>
+        <location filename="../lib/model/device/parameter.cpp" line="287"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="318"/>
+        <location filename="../lib/model/device/parameter.cpp" line="300"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="336"/>
+        <location filename="../lib/model/device/parameter.cpp" line="318"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -4124,78 +4134,78 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>PortModel</name>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="29"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="29"/>
         <source>Working</source>
         <translation>Trabajando</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="31"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="31"/>
         <source>Stand</source>
         <translation>En soporte</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="33"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="33"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="35"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="35"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="43"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="43"/>
         <source>Cooling</source>
         <translation>Enfriando</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="45"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="45"/>
         <source>Suction</source>
         <translation>Succión</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="47"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="47"/>
         <source>Motor forward</source>
         <translation>Motor adelante</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="49"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="49"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="71"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="71"/>
         <source>the tip went above the high alarm limit: if the selected temperature was just lowered, wait for the tip to cool; check that the tip suits the tool and the high alarm limit (Settings, Alarms)</source>
         <translation>la punta superó el límite de alarma alto: si se acaba de bajar la temperatura seleccionada, espere a que la punta se enfríe; compruebe que la punta corresponde a la herramienta y el límite de alarma alto (Ajustes, Alarmas)</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="76"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="76"/>
         <source>the tip fell below the low alarm limit: the joint may draw more heat than the tip gives (a larger tip), the tip may be worn or not tinned; check the low alarm limit (Settings, Alarms)</source>
         <translation>la punta bajó del límite de alarma bajo: la soldadura puede pedir más calor del que da la punta (una punta mayor), o la punta puede estar gastada o sin estañar; compruebe el límite de alarma bajo (Ajustes, Alarmas)</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="122"/>
-        <location filename="../lib/model/portmodel.cpp" line="137"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="122"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="137"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="60"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="60"/>
         <source>High temperature</source>
         <translation>Temperatura alta</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="62"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="62"/>
         <source>Low temperature</source>
         <translation>Temperatura baja</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="63"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="63"/>
         <source>None</source>
         <translation>Ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="198"/>
+        <location filename="../lib/model/device/portmodel.cpp" line="198"/>
         <source>this port has no %1 command</source>
         <translation>este puerto no tiene el comando %1</translation>
     </message>
@@ -4203,27 +4213,27 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>ProblemLevel</name>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="44"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="44"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="46"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="46"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="48"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="48"/>
         <source>Info</source>
         <translation>Información</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="50"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="50"/>
         <source>Warning</source>
         <translation>Advertencia</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="52"/>
+        <location filename="../lib/model/events/problemlevel.cpp" line="52"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
@@ -4231,100 +4241,100 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="113"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="113"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: no es un ajuste de %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="118"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="118"/>
         <source>%1: &apos;%2&apos; is not a valid data field</source>
         <translation>%1: &apos;%2&apos; no es un campo de datos válido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="220"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="123"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="131"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="131"/>
         <source>%1 bytes; a profile is at most %2</source>
         <translation>%1 bytes; un perfil tiene como máximo %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="145"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="145"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="158"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="158"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="169"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="169"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="177"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="177"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="184"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="184"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="199"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="199"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="211"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="211"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="216"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="216"/>
         <source>%1 is %2</source>
         <translation>%1 tiene %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="236"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="236"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="141"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="141"/>
         <source>not a valid JSON file: %1</source>
         <translation>no es un archivo JSON válido: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="152"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="129"/>
+        <location filename="../lib/model/profiles/profilejson.cpp" line="129"/>
         <source>a NUL byte at byte %1</source>
         <translation>un byte NUL en el byte %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="130"/>
+        <location filename="../lib/model/profiles/profilejson.cpp" line="130"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>carácter de control 0x%1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="161"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="161"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>el esquema de perfil %1 no es compatible (esta versión lee los esquemas %2 a %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="188"/>
+        <location filename="../lib/model/profiles/profile.cpp" line="188"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;, o un objeto con uno en &quot;raw&quot; (y texto en &quot;name&quot; y &quot;value&quot;)</translation>
     </message>
@@ -4332,37 +4342,37 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="33"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="33"/>
         <source>refused, nothing was written: %1</source>
         <translation>rechazado, no se escribió nada: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="37"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="37"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="40"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="40"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>cambiado %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="42"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="42"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FALLÓ %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="45"/>
         <source>would send %1</source>
         <translation>se enviaría %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="50"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="50"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>cancelado: los valores restantes no se escribieron</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="61"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="61"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n diferencia</numerusform>
@@ -4370,64 +4380,64 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="62"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="62"/>
         <source>%1 would change, %2 already right</source>
         <translation>%1 cambiarían, %2 ya correctos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="65"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="65"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="113"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="113"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="118"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="118"/>
         <source>monitor-only mode is on</source>
         <translation>el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="179"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="179"/>
         <source>reading the device</source>
         <translation>leyendo el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="241"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="241"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="244"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="244"/>
         <source>unreadable value</source>
         <translation>valor ilegible</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="303"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="303"/>
         <source>profile %1 applied: %2 changed, %3 failed, %4 already right%5</source>
         <translation>perfil %1 aplicado: %2 cambiados, %3 fallidos, %4 ya correctos%5</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="308"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="308"/>
         <source> (cancelled)</source>
         <translation> (cancelado)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="85"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="85"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>el perfil rompería los límites de sus ajustes (MIT ≤ MAT, MIT ≤ temperatura seleccionada ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="106"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="106"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>ninguno de los ajustes del perfil existe en este %1 (omitidos: %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="53"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="53"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n omitido</numerusform>
@@ -4435,12 +4445,12 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="134"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="134"/>
         <source>this %1 has no such setting</source>
         <translation>este %1 no tiene ese ajuste</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profiles/profileapplier.cpp" line="47"/>
         <source>skipped %1 %2: %3</source>
         <translation>omitido %1 %2: %3</translation>
     </message>
@@ -4448,27 +4458,27 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>ProfileLimits</name>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="64"/>
         <source>in the profile</source>
         <translation>en el perfil</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="65"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="65"/>
         <source>on the device now</source>
         <translation>ahora en el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="66"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="66"/>
         <source>%1 %2 (%3)</source>
         <translation>%1 %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="84"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="84"/>
         <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
         <translation>%1 es desconocido (el equipo no respondió), así que %2 no se puede comprobar con él</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="92"/>
+        <location filename="../lib/model/profiles/profilelimits.cpp" line="92"/>
         <source>%1 is above %2</source>
         <translation>%1 está por encima de %2</translation>
     </message>
@@ -4476,22 +4486,22 @@ transporte; el diario (joints, board, journal show): 6 no existe, 7 dañado, 8 m
 <context>
     <name>ProfileRequest</name>
     <message>
-        <location filename="../lib/model/profilerequest.cpp" line="37"/>
+        <location filename="../lib/model/profiles/profilerequest.cpp" line="37"/>
         <source>&quot;request_id&quot; must be text of at most %1 characters, without control characters</source>
         <translation>&quot;request_id&quot; debe ser un texto de como máximo %1 caracteres, sin caracteres de control</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilerequest.cpp" line="53"/>
+        <location filename="../lib/model/profiles/profilerequest.cpp" line="53"/>
         <source>the request is %1; nothing will be written</source>
         <translation>la solicitud tiene %1; no se escribirá nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilerequest.cpp" line="72"/>
+        <location filename="../lib/model/profiles/profilerequest.cpp" line="72"/>
         <source>given more than once, so which one is meant is unclear: %1; nothing will be written</source>
         <translation>indicado más de una vez, así que no está claro cuál se quiere decir: %1; no se escribirá nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilerequest.cpp" line="79"/>
+        <location filename="../lib/model/profiles/profilerequest.cpp" line="79"/>
         <source>&quot;profile&quot; must be a profile: an object as tipscope-cli profile save writes it</source>
         <translation>&quot;profile&quot; debe ser un perfil: un objeto como lo escribe tipscope-cli profile save</translation>
     </message>
@@ -4648,8 +4658,8 @@ Hágalo permanente con esta regla de udev:
     <name>Session</name>
     <message>
         <location filename="../lib/model/session.cpp" line="30"/>
-        <location filename="../lib/model/session.cpp" line="131"/>
-        <location filename="../lib/model/session.cpp" line="134"/>
+        <location filename="../lib/model/session.cpp" line="129"/>
+        <location filename="../lib/model/session.cpp" line="132"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
@@ -4659,39 +4669,39 @@ Hágalo permanente con esta regla de udev:
         <translation>leyendo la grabación %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="130"/>
-        <location filename="../lib/model/session.cpp" line="143"/>
-        <location filename="../lib/model/session.cpp" line="151"/>
+        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="141"/>
+        <location filename="../lib/model/session.cpp" line="149"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="167"/>
+        <location filename="../lib/model/session.cpp" line="165"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="218"/>
+        <location filename="../lib/model/session.cpp" line="216"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="230"/>
+        <location filename="../lib/model/session.cpp" line="228"/>
         <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero no se pudo identificar ningún equipo; lo que volvió: %2 (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="235"/>
+        <location filename="../lib/model/session.cpp" line="233"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="243"/>
+        <location filename="../lib/model/session.cpp" line="241"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -4699,7 +4709,7 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="223"/>
         <source>connected to %1, but %2</source>
         <translation>conectado a %1, pero %2</translation>
     </message>
@@ -4707,12 +4717,12 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SettingName</name>
     <message>
-        <location filename="../lib/model/settingname.cpp" line="22"/>
+        <location filename="../lib/model/device/settingname.cpp" line="22"/>
         <source>tool %1</source>
         <translation>herramienta %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/settingname.cpp" line="33"/>
+        <location filename="../lib/model/device/settingname.cpp" line="33"/>
         <source>port %1</source>
         <translation>puerto %1</translation>
     </message>
@@ -4720,28 +4730,28 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>StationModel</name>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="56"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="62"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="75"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="81"/>
         <source>%1 does not support %2</source>
         <translation>%1 no admite %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="82"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="88"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 no puede guardar en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="118"/>
-        <location filename="../lib/model/stationmodel.cpp" line="122"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="126"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="131"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="136"/>
+        <location filename="../lib/model/device/stationmodel.cpp" line="146"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -4749,157 +4759,157 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="176"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="176"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="178"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="178"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="117"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="117"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="118"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="118"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="119"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="119"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="168"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="168"/>
         <source>Workspace line %1</source>
         <translation>Línea %1 del espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="169"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="169"/>
         <source>Workspace line %1 (%2)</source>
         <translation>Línea %1 del espacio de trabajo (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="192"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="192"/>
         <source>Recent events of %1:</source>
         <translation>Eventos recientes de %1:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="201"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="201"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="32"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="32"/>
         <source>Device %1</source>
         <translation>Equipo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="37"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="37"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="39"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="39"/>
         <source>, software %1</source>
         <translation>, software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="46"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="46"/>
         <source>Joints of the last 24 hours: not read: %1</source>
         <translation>Soldaduras de las últimas 24 horas: no leídas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="48"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="48"/>
         <source>Joints from %1 to %2:</source>
         <translation>Soldaduras de %1 a %2:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="53"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="53"/>
         <source>  none</source>
         <translation>  ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="60"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="60"/>
         <source>  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, %7 incomplete</source>
         <translation>  %1, puerto %2: %3 soldaduras: %4 correctas, %5 recuperación lenta, %6 demasiado profundas, %7 incompletas</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="68"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="68"/>
         <source>; recovery median %1 ms, 95th percentile %2 ms</source>
         <translation>; recuperación mediana %1 ms, percentil 95 %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="81"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="81"/>
         <source>Journal: %1</source>
         <translation>Diario: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="83"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="83"/>
         <source>yes</source>
         <translation>sí</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="84"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="84"/>
         <source>no</source>
         <translation>no</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="86"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="86"/>
         <source>not yet, opening</source>
         <translation>todavía no, abriéndose</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="87"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="87"/>
         <source>no, closed</source>
         <translation>no, cerrado</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="89"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="89"/>
         <source>  writing: %1</source>
         <translation>  escribe: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="90"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="90"/>
         <source>  writing: %1: %2</source>
         <translation>  escribe: %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="92"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="92"/>
         <source>  lost: %1 records (%2)</source>
         <translation>  perdidos: %1 registros (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="95"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="95"/>
         <source>  not read: %1</source>
         <translation>  no leído: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="98"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="98"/>
         <source>  %1 joints and %2 events, %3 and %4 of them not yet published; %5 waiting in memory</source>
         <translation>  %1 soldaduras y %2 eventos, de ellos %3 y %4 aún sin publicar; %5 esperando en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="104"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="104"/>
         <source>  from %1 to %2</source>
         <translation>  de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="107"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="107"/>
         <source>  kept without a time limit; %1 bytes on disk</source>
         <translation>  conservado sin límite de tiempo; %1 bytes en disco</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="109"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="109"/>
         <source>  kept for %1 days; %2 bytes on disk</source>
         <translation>  conservado %1 días; %2 bytes en disco</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="135"/>
+        <location filename="../lib/model/report/supportreporttext.cpp" line="135"/>
         <source>  What to check:</source>
         <translation>  Qué comprobar:</translation>
     </message>
@@ -5002,17 +5012,17 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkContextJson</name>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="20"/>
+        <location filename="../lib/model/context/workcontextjson.cpp" line="20"/>
         <source>%1 has %2 characters; at most %3 are kept</source>
         <translation>%1 tiene %2 caracteres; se guardan como máximo %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="27"/>
+        <location filename="../lib/model/context/workcontextjson.cpp" line="27"/>
         <source>%1 holds a control character (%2) at character %3</source>
         <translation>%1 contiene un carácter de control (%2) en el carácter %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="53"/>
+        <location filename="../lib/model/context/workcontextjson.cpp" line="53"/>
         <source>%1 must be text</source>
         <translation>%1 debe ser texto</translation>
     </message>
@@ -5222,44 +5232,44 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::BoardReportDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="25"/>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="116"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="26"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="130"/>
         <source>Board report</source>
         <translation>Informe de placa</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="34"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="35"/>
         <source>Every joint the journal keeps for the board, its result, its tools&apos; wear and the events while it was made, as a PDF to sign.</source>
         <translation>Cada soldadura que el diario guarda de la placa, su resultado, el desgaste de sus puntas y los eventos mientras se fabricaba, como PDF para firmar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="40"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="41"/>
         <source>Board serial:</source>
         <translation>Número de serie de la placa:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="43"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="44"/>
         <source>Write PDF…</source>
         <translation>Escribir PDF…</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="57"/>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="111"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="61"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="125"/>
         <source>Give the serial of a board.</source>
         <translation>Indique el número de serie de una placa.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="78"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="82"/>
         <source>Reading the journal for board %1…</source>
         <translation>Leyendo el diario para la placa %1…</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="90"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="95"/>
         <source>The journal has no board %1: no joint or event carries that serial.</source>
         <translation>El diario no tiene la placa %1: ninguna soldadura ni evento lleva ese número de serie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="118"/>
+        <location filename="../app/gui/dialogs/boardreportdialog.cpp" line="132"/>
         <source>PDF documents (*.pdf)</source>
         <translation>Documentos PDF (*.pdf)</translation>
     </message>
@@ -5275,7 +5285,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="502"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="508"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -5287,38 +5297,38 @@ Hágalo permanente con esta regla de udev:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
-        <location filename="../app/gui/charts/chartspage.h" line="69"/>
+        <location filename="../app/gui/charts/chartspage.h" line="70"/>
         <location filename="../app/gui/screenshots.cpp" line="231"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="108"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="106"/>
         <source>Values under the cursor</source>
         <translation>Valores bajo el cursor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="127"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="128"/>
         <source>&amp;Measurements</source>
         <translation>&amp;Mediciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="131"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="132"/>
         <source>Heat-ups, recoveries and min/max/mean of the visible window</source>
         <translation>Calentamientos, recuperaciones y mín./máx./media de la ventana visible</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="136"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="137"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>&amp;Banda de calentamiento y recuperación ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="139"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="140"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Banda de tolerancia alrededor de la consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="153"/>
         <source>Measurements of the visible window</source>
         <translation>Mediciones de la ventana visible</translation>
     </message>
@@ -5328,62 +5338,62 @@ Hágalo permanente con esta regla de udev:
         <translation>Señale un gráfico para leer todas las series en ese instante.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="197"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="196"/>
         <source>Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
         <translation>Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: zoom a un intervalo · doble clic: restablecer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="174"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="175"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="177"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
         <source>%1 — feeder</source>
         <translation>%1 — alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
         <source>%1 — all ports</source>
         <translation>%1 — todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>Temperature (%1)</source>
         <translation>Temperatura (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="300"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="301"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="49"/>
         <source>device</source>
         <translation>equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="52"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="51"/>
         <source>%1 · %2 · %3: %4</source>
         <translation>%1 · %2 · %3: %4</translation>
     </message>
@@ -5528,17 +5538,17 @@ Hágalo permanente con esta regla de udev:
         <translation>Falló la escritura de %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="79"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="78"/>
         <source>P%1</source>
         <translation>P%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="95"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="94"/>
         <source>High alarm</source>
         <translation>Alarma alta</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="98"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="97"/>
         <source>Low alarm</source>
         <translation>Alarma baja</translation>
     </message>
@@ -7024,124 +7034,124 @@ Reset it?</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="81"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>Data field</source>
         <translation>Campo de datos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="89"/>
         <source>&amp;Send frame</source>
         <translation>&amp;Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
         <source>Send frame</source>
         <translation>Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
         <source>Frame to be sent</source>
         <translation>Trama que se enviará</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
         <source>Catalog check</source>
         <translation>Comprobación del catálogo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Raw bytes in hex</source>
         <translation>Bytes en bruto en hexadecimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="103"/>
         <source>Send ra&amp;w hex</source>
         <translation>Enviar he&amp;x en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="104"/>
         <source>Send raw hex</source>
         <translation>Enviar hex en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="104"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
         <source>Raw bytes check</source>
         <translation>Comprobación de los bytes en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="105"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="107"/>
         <source>Nothing sent yet.</source>
         <translation>Aún no se ha enviado nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="108"/>
         <source>Outcome of the last send</source>
         <translation>Resultado del último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="115"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="117"/>
         <source>&amp;Device</source>
         <translation>E&amp;quipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="117"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>&amp;Header</source>
         <translation>Ca&amp;becera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>C&amp;ommand</source>
         <translation>C&amp;omando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="123"/>
         <source>D&amp;ata</source>
         <translation>Da&amp;tos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="126"/>
         <source>Frame</source>
         <translation>Trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="127"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="129"/>
         <source>&amp;Raw hex</source>
         <translation>Hex en b&amp;ruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="131"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="133"/>
         <source>Last send</source>
         <translation>Último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="240"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="242"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="213"/>
         <source>(nothing to send)</source>
         <translation>(nada que enviar)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="217"/>
         <source>none for reads</source>
         <translation>nada al leer</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="217"/>
         <source>e.g. 00350</source>
         <translation>p. ej. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="229"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="264"/>
         <source>Not sent: %1</source>
         <translation>No enviado: %1</translation>
     </message>
@@ -7991,73 +8001,73 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="207"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
         <source>no recovery</source>
         <translation>sin recuperación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="209"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="230"/>
         <source>last joint %1, %2</source>
         <translation>última soldadura %1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="236"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="259"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="237"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="260"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="238"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="261"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="263"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="289"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="267"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="269"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="278"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="281"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="301"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="304"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="286"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="309"/>
         <source>status: %1</source>
         <translation>estado: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="288"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="311"/>
         <source>alarm: %1</source>
         <translation>alarma: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="256"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="279"/>
         <source>Not connected: last read %1</source>
         <translation>No conectado: última lectura %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="258"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="281"/>
         <source>Not connected: not read yet</source>
         <translation>No conectado: aún sin leer</translation>
     </message>
@@ -8504,123 +8514,123 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="233"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="242"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="42"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Revertir</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="43"/>
         <source>Save to station &amp;memory</source>
         <translation>Guardar en la &amp;memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>La temperatura seleccionada es volátil: W-NVS la guarda para que se conserve tras reiniciar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
         <source>Station actions</source>
         <translation>Acciones de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
         <source>Profiles</source>
         <translation>Perfiles</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="53"/>
         <source>Save device settings to a profile…</source>
         <translation>Guardar los ajustes del equipo en un perfil…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="52"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="55"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Abrir un perfil (comparar, simular, aplicar)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="55"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="64"/>
         <source>Port:</source>
         <translation>Puerto:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="154"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Conéctese y seleccione un equipo para ver sus ajustes.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="157"/>
         <source>Port %1 (%2)</source>
         <translation>Puerto %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="169"/>
         <source>Station</source>
         <translation>Estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="167"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="176"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="177"/>
         <source>Alarms, port %1</source>
         <translation>Alarmas, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="179"/>
         <source>Tool %1, port %2</source>
         <translation>Herramienta %1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="172"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="181"/>
         <source> (connected)</source>
         <translation> (conectada)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="176"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="185"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dispensado (alimentación de hilo de la ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="193"/>
         <source>Feeding</source>
         <translation>Alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="233"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="242"/>
         <source>&amp;Apply (%1)</source>
         <translation>A&amp;plicar (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="300"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="309"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="321"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="319"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="328"/>
         <source>%1
 
 %2
@@ -8633,27 +8643,27 @@ Do you want to continue?</source>
 ¿Desea continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="334"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="346"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="349"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="361"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="335"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="344"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="341"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="350"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="385"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="375"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="381"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="390"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
@@ -8663,27 +8673,27 @@ Do you want to continue?</source>
         <translation>Ajustes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="242"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="251"/>
         <source>⚠ Not connected: the greyed values are as last read (the time is beside each). Apply, Save to station memory, Station actions and Profiles wait for the line.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura (la hora está al lado). Aplicar, Guardar en la memoria de la estación, Acciones de la estación y Perfiles esperan a la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="246"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="255"/>
         <source>Monitor-only mode is on: Apply, Save to station memory and Station actions are off, nothing is written.</source>
         <translation>El modo solo monitorización está activo: Aplicar, Guardar en la memoria de la estación y Acciones de la estación están desactivados, no se escribe nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="347"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="356"/>
         <source>A comment for the profile (optional), e.g. what it is for or who set it:</source>
         <translation>Un comentario para el perfil (opcional), p. ej. para qué es o quién lo configuró:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="367"/>
         <source>no device is selected</source>
         <translation>no hay ningún equipo seleccionado</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="363"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="372"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Perfil guardado: %n ajuste de %1 en %2</numerusform>
@@ -8796,7 +8806,7 @@ Do you want to continue?</source>
         <translation>el equipo en la dirección %1 no se identificó (%2): %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="103"/>
+        <location filename="../lib/link/discovery.cpp" line="100"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -8804,7 +8814,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="107"/>
+        <location filename="../lib/link/discovery.cpp" line="104"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n respuesta con una suma de control o un formato incorrectos</numerusform>
@@ -8812,7 +8822,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="109"/>
+        <location filename="../lib/link/discovery.cpp" line="106"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n trama de una dirección no consultada</numerusform>
@@ -8820,7 +8830,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="111"/>
+        <location filename="../lib/link/discovery.cpp" line="108"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n byte que no era una trama</numerusform>
@@ -8932,22 +8942,22 @@ Do you want to continue?</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="222"/>
+        <location filename="../lib/link/requestqueue.cpp" line="221"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="256"/>
+        <location filename="../lib/link/requestqueue.cpp" line="255"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="265"/>
+        <location filename="../lib/link/requestqueue.cpp" line="264"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="269"/>
+        <location filename="../lib/link/requestqueue.cpp" line="268"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
@@ -8957,12 +8967,12 @@ Do you want to continue?</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="319"/>
+        <location filename="../lib/link/requestqueue.cpp" line="318"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="335"/>
+        <location filename="../lib/link/requestqueue.cpp" line="334"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -8970,7 +8980,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="338"/>
+        <location filename="../lib/link/requestqueue.cpp" line="337"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -8978,17 +8988,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="341"/>
+        <location filename="../lib/link/requestqueue.cpp" line="340"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="413"/>
+        <location filename="../lib/link/requestqueue.cpp" line="412"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="415"/>
+        <location filename="../lib/link/requestqueue.cpp" line="414"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
@@ -9009,17 +9019,17 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::SimTransport</name>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="24"/>
+        <location filename="../lib/link/simtransport.cpp" line="26"/>
         <source>the simulated line is unplugged</source>
         <translation>la línea simulada está desenchufada</translation>
     </message>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="51"/>
+        <location filename="../lib/link/simtransport.cpp" line="53"/>
         <source>demo (simulated %1)</source>
         <translation>demo (%1 simulado)</translation>
     </message>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="62"/>
+        <location filename="../lib/link/simtransport.cpp" line="64"/>
         <source>the simulated cable was pulled</source>
         <translation>se desenchufó el cable simulado</translation>
     </message>
@@ -9045,37 +9055,37 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::model::ConsoleSender</name>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="15"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="15"/>
         <source>%1: answered %2 after %L3 ms</source>
         <translation>%1: respondió %2 tras %L3 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="19"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="19"/>
         <source>%1: refused, %2</source>
         <translation>%1: rechazado, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="21"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="21"/>
         <source>%1: no answer (timeout)</source>
         <translation>%1: sin respuesta (tiempo agotado)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="23"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="23"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="52"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="52"/>
         <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
         <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="58"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="58"/>
         <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
         <translation>El modo solo supervisión está activado: los bytes que no forman una trama R válida podrían ser una escritura, así que no se envían.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="69"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n byte en bruto</numerusform>
@@ -9083,17 +9093,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="75"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="75"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: no enviado, sin conexión</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="79"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="79"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: no enviado, el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="91"/>
+        <location filename="../lib/model/console/consolesender.cpp" line="91"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
     </message>

@@ -340,7 +340,8 @@ void MainWindow::loadJointLimits() {
 // Said where the problems are read, and the defaults judge meanwhile.
 void MainWindow::sayLimitsProblem() {
     if (const auto problem = std::exchange(m_limitsProblem, std::nullopt))
-        m_session.eventLog().add(Event::Kind::Joint, Event::Severity::Warning, tr("joint limits"),
+        m_session.eventLog().add(Event::Kind::JointWarning, Event::Severity::Warning,
+                                 tr("joint limits"),
                                  tr("%1; the default limits judge joints").arg(*problem));
 }
 

@@ -9,66 +9,10 @@ using Severity = JournalEvent::Severity;
 
 constexpr Severity kSeverities[] = {Severity::Info, Severity::Warning, Severity::Error};
 
-Kind kindOf(model::Event::Kind kind) {
-    switch (kind) {
-    case model::Event::Kind::StationError:
-        return Kind::StationError;
-    case model::Event::Kind::PortError:
-        return Kind::PortError;
-    case model::Event::Kind::FeederError:
-        return Kind::FeederError;
-    case model::Event::Kind::Alarm:
-        return Kind::Alarm;
-    case model::Event::Kind::Status:
-        return Kind::Status;
-    case model::Event::Kind::Write:
-        return Kind::Write;
-    case model::Event::Kind::Communication:
-        return Kind::Communication;
-    case model::Event::Kind::Connection:
-        return Kind::Connection;
-    case model::Event::Kind::ToolChange:
-        return Kind::ToolChange;
-    case model::Event::Kind::Joint:
-        return Kind::JointWarning;
-    case model::Event::Kind::ProfileApply:
-        return Kind::ProfileApply;
-    }
-    return Kind::Status;
-}
-
 } // namespace
 
 QString JournalEvent::kindName(Kind kind) {
-    switch (kind) {
-    case Kind::StationError:
-        return model::Event::kindName(model::Event::Kind::StationError);
-    case Kind::PortError:
-        return model::Event::kindName(model::Event::Kind::PortError);
-    case Kind::FeederError:
-        return model::Event::kindName(model::Event::Kind::FeederError);
-    case Kind::Alarm:
-        return model::Event::kindName(model::Event::Kind::Alarm);
-    case Kind::Status:
-        return model::Event::kindName(model::Event::Kind::Status);
-    case Kind::Write:
-        return model::Event::kindName(model::Event::Kind::Write);
-    case Kind::Communication:
-        return model::Event::kindName(model::Event::Kind::Communication);
-    case Kind::Connection:
-        return model::Event::kindName(model::Event::Kind::Connection);
-    case Kind::ToolChange:
-        return model::Event::kindName(model::Event::Kind::ToolChange);
-    case Kind::ProfileApply:
-        return model::Event::kindName(model::Event::Kind::ProfileApply);
-    case Kind::ContextChange:
-        return QStringLiteral("context change");
-    case Kind::JointWarning:
-        return QStringLiteral("joint warning");
-    case Kind::Journal:
-        return QStringLiteral("journal");
-    }
-    return {};
+    return model::Event::kindName(kind);
 }
 
 std::optional<JournalEvent::Kind> JournalEvent::kindFromName(const QString &name) {
@@ -95,7 +39,7 @@ JournalEvent JournalEvent::fromEventLog(const model::Event &event,
                                         const model::DeviceIdentity &device,
                                         std::optional<int> port) {
     JournalEvent out;
-    out.kind = kindOf(event.kind);
+    out.kind = event.kind;
     out.severity = event.severity;
     out.device = device;
     out.port = port;

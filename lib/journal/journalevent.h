@@ -1,8 +1,8 @@
 // JournalEvent: one thing that happened, as the journal keeps it for audit: station, port and
-// feeder errors, alarms, status changes, setting writes with their read-back, communication
-// errors, connects and disconnects (the EventLog's kinds), plus tool changes, profile applies,
-// context changes, joint verdict warnings and the journal's own reports (records it could not
-// store). A plain value.
+// feeder errors, alarms, status and tool changes, setting writes with their read-back, profile
+// applies, joint warnings, communication errors, connects and disconnects, as a device's event
+// log has them (model::Event::Kind is the one vocabulary), plus what only the journal has:
+// context changes and its own reports (records it could not store). A plain value.
 //
 // The time is milliseconds since the epoch (UTC). The device is empty for an event about no
 // device in particular; the port is empty for an event about a whole device. `details` holds
@@ -21,21 +21,8 @@
 namespace tipscope::journal {
 
 struct JournalEvent {
-    enum class Kind {
-        StationError,
-        PortError,
-        FeederError,
-        Alarm,
-        Status,
-        Write,
-        Communication,
-        Connection,
-        ToolChange,
-        ProfileApply,
-        ContextChange,
-        JointWarning,
-        Journal
-    };
+    // The event log's vocabulary, one from the wire to the screen and the journal.
+    using Kind = model::Event::Kind;
     using Severity = model::Event::Severity;
 
     Kind kind = Kind::Status;

@@ -70,7 +70,7 @@ void Session::logJointWarning(const DeviceIdentity &device, int port, const QStr
         return;
     for (DeviceModel *d : std::as_const(m_devices))
         if (d->identity() == device)
-            d->logEvent(Event::Kind::Joint, Event::Severity::Warning, port, text);
+            d->logEvent(Event::Kind::JointWarning, Event::Severity::Warning, port, text);
 }
 
 void Session::clearDevices() {

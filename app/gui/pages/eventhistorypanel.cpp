@@ -99,7 +99,7 @@ QLayout *EventHistoryPanel::buildFilters() {
         {Event::Kind::Communication, tr("Communication")},
         {Event::Kind::Connection, tr("Connection")},
         {Event::Kind::ToolChange, tr("Tool changes")},
-        {Event::Kind::Joint, tr("Joints")},
+        {Event::Kind::JointWarning, tr("Joints")},
         {Event::Kind::ProfileApply, tr("Profile applies")}};
     for (const auto &[kind, name] : kinds)
         m_kindFilter->addItem(name, eventKindBit(kind));

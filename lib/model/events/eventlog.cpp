@@ -32,10 +32,14 @@ QString Event::kindName(Kind kind) {
         return QStringLiteral("connection");
     case Kind::ToolChange:
         return QStringLiteral("tool change");
-    case Kind::Joint:
-        return QStringLiteral("joint");
+    case Kind::JointWarning:
+        return QStringLiteral("joint warning");
     case Kind::ProfileApply:
         return QStringLiteral("profile apply");
+    case Kind::ContextChange:
+        return QStringLiteral("context change");
+    case Kind::Journal:
+        return QStringLiteral("journal");
     }
     return {};
 }
@@ -60,10 +64,14 @@ QString Event::kindTitle(Kind kind) {
         return EventTr::tr("Connection");
     case Kind::ToolChange:
         return EventTr::tr("Tool change");
-    case Kind::Joint:
+    case Kind::JointWarning:
         return EventTr::tr("Joint");
     case Kind::ProfileApply:
         return EventTr::tr("Profile apply");
+    case Kind::ContextChange:
+        return EventTr::tr("Work context");
+    case Kind::Journal:
+        return EventTr::tr("Journal");
     }
     return {};
 }

@@ -31,8 +31,12 @@ struct Event {
         Connection,
         ToolChange,
         // A joint outside its limits, or a tip that recovers more slowly than it did new.
-        Joint,
-        ProfileApply
+        JointWarning,
+        ProfileApply,
+        // The journal's own, never in a device's log: the work context named another board,
+        // operator or work order; the journal's reports about itself (records it could not keep).
+        ContextChange,
+        Journal
     };
     enum class Severity { Info, Warning, Error };
 

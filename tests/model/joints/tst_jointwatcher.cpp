@@ -77,7 +77,7 @@ void TestJointWatcher::theDemoStationsJointsAreFoundMeasuredAndJudged() {
     QVERIFY(warning != events.cend());
     QCOMPARE(warning->port, 1);
     QCOMPARE(warning->severity, Event::Severity::Warning);
-    QCOMPARE(warning->kind, Event::Kind::Joint);
+    QCOMPARE(warning->kind, Event::Kind::JointWarning);
 }
 
 // Readings every 100 ms on one port, written straight into the telemetry: a settled tip, a dip
