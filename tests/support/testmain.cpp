@@ -1,4 +1,4 @@
-// The main() of a folder's test executable: `tests_model tst_scheduler [Qt Test options]` runs
+// The main() of a folder's test executable: `tests_model tst_pollscheduler [Qt Test options]` runs
 // the one test named, as its own executable did before (testmain.h says why they share one).
 #include "testmain.h"
 

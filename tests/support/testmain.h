@@ -4,10 +4,10 @@
 // of eight test sources shares the cost of starting the compiler, loading the precompiled Qt
 // headers and instantiating Qt Test's templates, which was most of each test's compile
 // (docs/development.md). CTest still runs each test alone, in a process of its own
-// (`tests_model tst_scheduler`), so a test sees nothing of the others but their code.
+// (`tests_model tst_pollscheduler`), so a test sees nothing of the others but their code.
 //
 // TIPSCOPE_TEST_MAIN and TIPSCOPE_TEST_GUILESS_MAIN do what QTEST_MAIN and QTEST_GUILESS_MAIN do,
-// in a function registered under the source's name (tst_scheduler.cpp: "tst_scheduler").
+// in a function registered under the source's name (tst_pollscheduler.cpp: "tst_pollscheduler").
 #pragma once
 
 #include <QTest>

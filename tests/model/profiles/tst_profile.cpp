@@ -1,5 +1,5 @@
 // Profiles round-trip, refuse bad files without writing, and apply while polling continues.
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 #include "model/live/pollscheduler.h"

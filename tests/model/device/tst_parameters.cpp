@@ -1,6 +1,6 @@
 // Every parameter of a DME, a DDR and an SFR reads, validates, writes and verifies against the
 // simulator through the real link; refused values never reach the wire.
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 #include "model/events/eventlog.h"

@@ -1,7 +1,7 @@
 // StationModel against the simulator: its lists follow the catalog's groups, its values are
 // found by role, its errors carry their words and level, its actions are found by role and a
 // missing one is named, and changes of error, alarm and status reach the event log.
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 #include "support/testcatalog.h"

@@ -1,6 +1,6 @@
 // PortModel against the simulator: a port's values by role, its decoded alarm and status, its
 // error's words and level, the catalog's groups per port, tool names, and the robot controls.
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 namespace tst_portmodel {

@@ -1,5 +1,5 @@
 // The poll scheduler spends the wire where people look and never floods the queue.
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 #include "model/device/portmodel.h"
@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-namespace tst_scheduler {
+namespace tst_pollscheduler {
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -348,5 +348,5 @@ void TestScheduler::fillingTheWireKeepsItBusyWithLiveValuesOnly() {
 
 TIPSCOPE_TEST_GUILESS_MAIN(TestScheduler)
 
-} // namespace tst_scheduler
-#include "tst_scheduler.moc"
+} // namespace tst_pollscheduler
+#include "tst_pollscheduler.moc"

@@ -1,7 +1,7 @@
 // FeederModel against the simulated SFR: its lists follow the catalog's groups, its values are
 // found by role, the feeding commands and the error reset reach the feeder, and error changes
 // reach the event log with their level.
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 namespace tst_feedermodel {

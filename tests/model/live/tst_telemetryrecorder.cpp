@@ -2,7 +2,7 @@
 // stamped at the instant its tip reading describes (not when the answer was decoded), never
 // before the sample before it, and a tip that got no answer leaves a gap.
 #include "model/live/telemetryrecorder.h"
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 namespace tst_telemetryrecorder {

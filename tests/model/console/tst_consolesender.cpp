@@ -1,7 +1,7 @@
 // The console's way onto the line, against the simulated DME at 01 and feeder at 10: what is sent
 // reaches the device once and its answer is reported; monitor-only refuses whatever is or may be
 // a write, says why, and puts nothing on the wire; without a line nothing is sent either.
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 #include "i18n/translations.h"

@@ -3,7 +3,7 @@
 // digits that matter; a read-back without an answer says why; a data field that means nothing is
 // no proof. Against the simulated station through the real queue.
 #include "model/device/writeproof.h"
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 #include "protocol/frame.h"

@@ -3,7 +3,7 @@
 // where each value comes from; a value the device did not answer is not taken as current; and a
 // profile that keeps the limits is written in an order that keeps them after every single write.
 #include "model/profiles/profilelimits.h"
-#include "simfixture.h"
+#include "model/simfixture.h"
 #include "testmain.h"
 
 #include "model/device/parameter.h"
