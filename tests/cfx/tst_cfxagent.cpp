@@ -291,13 +291,15 @@ private Q_SLOTS:
         journal::EventFilter port4;
         port4.kinds = {journal::JournalEvent::Kind::Status};
         port4.port = 4;
-        // Toggled at uneven intervals: at a steady 1.5 s, a status read every 3 s saw port 4
-        // in the same state every time (once, for 66 s under load).
+        // Toggled more slowly than the agent reads the status (every 3 s or so): two toggles
+        // between two reads bring port 4 back where it was and show no change (at a steady
+        // 1.5 s it never showed one; at 1.1-2.3 s it took 85 s under load). Uneven, so that no
+        // steady read cycle can keep in step with them.
         QElapsedTimer toggle;
         toggle.start();
         int mode = 1;
         int toggles = 0;
-        const int intervalsMs[] = {1100, 1900, 1300, 2300};
+        const int intervalsMs[] = {3700, 5300, 4300};
         const auto port4Changed = [&] {
             if (toggle.elapsed() > intervalsMs[size_t(toggles) % std::size(intervalsMs)]) {
                 mode = 3 - mode; // 1 (stand) and 2 (sleep) in turn
