@@ -285,27 +285,23 @@ private Q_SLOTS:
         agent.configure(line, 1, {},
                         {{QStringLiteral("cfx"), cfxSection()}, {QStringLiteral("broker"), false}});
         QVERIFY2(agent.start(&error), qPrintable(error));
-        // Port 4 between its stand and sleep changes nothing for the station, which stays in
-        // the stand; once the journal holds such a change, the agent has read every port.
+        // Port 4 between sleep and hibernation changes nothing for the station, which rests
+        // (one E10 state for both); once the journal holds such a change, the agent has read
+        // every port. Not between the stand and sleep: the simulated station's sleep delay is 0,
+        // so a port put in the stand is asleep at its next tick, and only a read in that instant
+        // saw the stand (the change took 85 s to be seen under load).
         journal::JournalReader reader;
         journal::EventFilter port4;
         port4.kinds = {journal::JournalEvent::Kind::Status};
         port4.port = 4;
-        // Toggled more slowly than the agent reads the status (every 3 s or so): two toggles
-        // between two reads bring port 4 back where it was and show no change (at a steady
-        // 1.5 s it never showed one; at 1.1-2.3 s it took 85 s under load). Uneven, so that no
-        // steady read cycle can keep in step with them.
         QElapsedTimer toggle;
         toggle.start();
-        int mode = 1;
-        int toggles = 0;
-        const int intervalsMs[] = {3700, 5300, 4300};
+        int mode = 2;
         const auto port4Changed = [&] {
-            if (toggle.elapsed() > intervalsMs[size_t(toggles) % std::size(intervalsMs)]) {
-                mode = 3 - mode; // 1 (stand) and 2 (sleep) in turn
+            if (toggle.elapsed() > 1500) {
+                mode = 5 - mode; // 2 (sleep) and 3 (hibernation) in turn
                 sim.command(QStringLiteral("status 4 %1").arg(mode));
                 toggle.restart();
-                ++toggles;
             }
             const auto events =
                 reader.keepOpen(agent.journalPath())
