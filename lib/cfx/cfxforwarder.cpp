@@ -120,7 +120,8 @@ void CfxForwarder::pumpEvents() {
     }
 }
 
-bool CfxForwarder::send(const QList<Envelope> &envelopes, qint64 row, const QString &station) {
+bool CfxForwarder::send(const QList<Envelope> &envelopes, qint64 row,
+                        const model::DeviceIdentity *station) {
     QList<quint64> tags;
     for (const Envelope &envelope : envelopes) {
         const quint64 tag = m_sender.send(toAmqpMessage(envelope, m_codec));
@@ -135,10 +136,10 @@ bool CfxForwarder::send(const QList<Envelope> &envelopes, qint64 row, const QStr
     if (envelopes.isEmpty())
         return true;
     m_unaccepted[row] += int(envelopes.size());
-    if (!station.isEmpty() && m_board && m_board->row() == row) {
-        m_board->unaccepted[station] += int(envelopes.size());
+    if (station && m_board && m_board->row() == row) {
+        m_board->unaccepted[*station] += int(envelopes.size());
         for (const quint64 tag : tags)
-            m_board->stationOfTag.insert(tag, station);
+            m_board->stationOfTag.insert(tag, *station);
     }
     return true;
 }
@@ -300,9 +301,10 @@ std::optional<bool> CfxForwarder::openBoard(const journal::StoredEvent &change) 
         return false;
     open.stationsKnown = true;
     open.told = m_boards.stations ? m_boards.stations() : QList<model::DeviceIdentity>();
-    open.workers = open.told;
+    // Each station told of the board, and each that made joints on the board ended, told of it
+    // or not.
+    QList<model::DeviceIdentity> workers = open.told;
     if (!open.board.ended.isEmpty()) {
-        // Each station that made joints on the board ended, told of it or not.
         journal::JointFilter filter;
         filter.boardSerial = open.board.ended;
         filter.sinceMs = open.board.endedBegan->record.timeMs;
@@ -314,10 +316,10 @@ std::optional<bool> CfxForwarder::openBoard(const journal::StoredEvent &change) 
             return std::nullopt;
         }
         for (const journal::StoredJoint &joint : *made)
-            if (!open.workers.contains(joint.record.device))
-                open.workers.append(joint.record.device);
+            if (!workers.contains(joint.record.device))
+                workers.append(joint.record.device);
     }
-    open.waiting = open.workers;
+    open.waiting = workers;
     return true;
 }
 
@@ -335,16 +337,15 @@ bool CfxForwarder::advanceBoard() {
                   static_cast<long long>(open.waiting.size()));
     for (qsizetype i = 0; i < open.waiting.size();) {
         const model::DeviceIdentity station = open.waiting.at(i);
-        const QString key = station.key();
         if (waitForJoints) {
-            auto mark = open.journalMarks.constFind(key);
+            auto mark = open.journalMarks.constFind(station);
             if (mark == open.journalMarks.cend()) {
                 if (m_boards.settled &&
                     !m_boards.settled(station, open.board.change.record.timeMs)) {
                     ++i;
                     continue;
                 }
-                mark = open.journalMarks.insert(key, m_journal.appendedMark());
+                mark = open.journalMarks.insert(station, m_journal.appendedMark());
             }
             if (!m_journal.dealtWith(*mark)) {
                 ++i;
@@ -353,7 +354,7 @@ bool CfxForwarder::advanceBoard() {
         }
         const std::optional<QList<Envelope>> made =
             stationEnvelopesOf(open.board, station, open.told.contains(station));
-        if (!made || !send(*made, open.row(), key))
+        if (!made || !send(*made, open.row(), &station))
             return false;
         open.waiting.removeAt(i);
     }
@@ -399,7 +400,7 @@ void CfxForwarder::onAccepted(quint64 tag) {
     ++m_accepted;
     const bool boardOpen = m_board && m_board->row() == row;
     if (boardOpen) {
-        const QString station = m_board->stationOfTag.take(tag);
+        const model::DeviceIdentity station = m_board->stationOfTag.take(tag);
         if (const auto left = m_board->unaccepted.find(station);
             left != m_board->unaccepted.end() && --*left == 0)
             m_board->unaccepted.erase(left);
@@ -431,9 +432,8 @@ void CfxForwarder::onLost() {
     // again, with the same UniqueIDs.
     if (m_board) {
         for (auto it = m_board->unaccepted.cbegin(); it != m_board->unaccepted.cend(); ++it)
-            for (const model::DeviceIdentity &station : std::as_const(m_board->workers))
-                if (station.key() == it.key() && !m_board->waiting.contains(station))
-                    m_board->waiting.append(station);
+            if (!m_board->waiting.contains(it.key()))
+                m_board->waiting.append(it.key());
         m_board->unaccepted.clear();
         m_board->stationOfTag.clear();
     }

@@ -129,9 +129,10 @@ private:
     // Sends the messages of each station of the open board that has settled; false when the
     // journal could not be read or the connection went.
     [[nodiscard]] bool advanceBoard();
-    // False when the connection went meanwhile (what was handed over is forgotten).
+    // False when the connection went meanwhile (what was handed over is forgotten). `station`:
+    // the open board's station whose messages these are.
     [[nodiscard]] bool send(const QList<Envelope> &envelopes, qint64 row,
-                            const QString &station = QString());
+                            const model::DeviceIdentity *station = nullptr);
     void markSoon(qint64 row);
     void onAccepted(quint64 tag);
     void onLost();
@@ -150,12 +151,11 @@ private:
         BoardChange board;
         qint64 sinceMs = 0;
         bool stationsKnown = false;
-        QList<model::DeviceIdentity> told;    // of the board it begins
-        QList<model::DeviceIdentity> workers; // told, and those that made joints on the one ended
+        QList<model::DeviceIdentity> told; // of the board it begins
         QList<model::DeviceIdentity> waiting;
-        QHash<QString, quint64> journalMarks; // DeviceIdentity::key() → mark
-        QHash<QString, int> unaccepted;       // DeviceIdentity::key() → messages
-        QHash<quint64, QString> stationOfTag; // tag → DeviceIdentity::key()
+        QHash<model::DeviceIdentity, quint64> journalMarks;
+        QHash<model::DeviceIdentity, int> unaccepted; // messages sent, not yet accepted
+        QHash<quint64, model::DeviceIdentity> stationOfTag;
         bool overdueSaid = false;
         [[nodiscard]] qint64 row() const { return board.change.id; }
     };
