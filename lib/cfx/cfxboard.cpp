@@ -207,7 +207,6 @@ QList<PortStatusTimes> portStatusTimes(const BoardWork &work) {
         PortStatusTimes times;
         std::optional<int> status; // the status digit since `sinceMs`
         qint64 sinceMs = 0;
-        bool known = false;
     };
     std::map<int, Walk> ports;
     const auto digit = [](const QJsonValue &v) {
@@ -225,21 +224,15 @@ QList<PortStatusTimes> portStatusTimes(const BoardWork &work) {
         // The status before this change: the one the last change went to, or this one's "from".
         const std::optional<int> before = walk.status ? walk.status : from;
         const qint64 since = walk.status ? walk.sinceMs : work.startedMs;
-        if (before && *before >= 0 && *before <= 3 && at > since) {
+        if (before && *before >= 0 && *before <= 3 && at > since)
             walk.times.ms[*before] += at - since;
-            walk.known = true;
-        }
         walk.status = to;
         walk.sinceMs = at;
     }
     QList<PortStatusTimes> out;
     for (auto &[port, walk] : ports) {
-        if (walk.status && work.finishedMs > walk.sinceMs) {
-            walk.times.ms[*walk.status] += work.finishedMs - walk.sinceMs;
-            walk.known = true;
-        }
-        if (walk.known)
-            out.append(walk.times);
+        walk.times.ms[*walk.status] += work.finishedMs - walk.sinceMs;
+        out.append(walk.times);
     }
     return out;
 }
