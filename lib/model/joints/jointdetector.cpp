@@ -16,6 +16,10 @@ constexpr double kWholeDegreeHalfStep = 0.5;
 // in the band, and after it.
 constexpr int kClimbReadingsBefore = 5;
 constexpr int kClimbReadingsAfter = 1;
+// A straight climb is fitted from where it has come this share of the way from its lowest
+// reading to the band's edge (below, the bottom rounds off), through at least this many readings.
+constexpr double kStraightFromShare = 0.2;
+constexpr size_t kStraightMinReadings = 6;
 // A local fit whose readings scatter more than this about it is following a wobble, not rounding
 // (whole degrees alone scatter 0.29 K).
 constexpr double kWobbleSigmaK = 0.5;
@@ -375,13 +379,20 @@ double JointDetector::wobbleReachK() const {
                                            kRoundingSigmaK * kRoundingSigmaK));
 }
 
+// Whether readings scattering `sigma` about a two-parameter fit through `count` of them scatter no
+// more than the settled tip's wobble, allowed the spread a variance has by chance over that many.
+bool JointDetector::withinWobble(double sigma, int count) const {
+    const double freedom = double(count - 2);
+    const double allowed = m_restingSigmaK * m_restingSigmaK * (1 + 2 * std::sqrt(2 / freedom));
+    return freedom > 0 && sigma * sigma <= allowed;
+}
+
 // The first-order return through the whole climb: from the lowest reading to the end of the wide
 // window after the return, as the readings past the edge say where the curve levels off. None
 // when it places the return far from the readings around it, or when the readings say the return
 // was not first order (a heater at full power climbing straight): they scatter about it more than
 // about a parabola through the same readings and more than the settled tip's own wobble allows.
-// A parabola alone fitting closer proves nothing, as its third coefficient follows a slow wobble;
-// the wobble's share is allowed the spread a variance has by chance over that many readings.
+// A parabola alone fitting closer proves nothing, as its third coefficient follows a slow wobble.
 std::optional<Approach> JointDetector::approachOf(const Return &r) const {
     const double setpoint = double(m_joint.setpoint);
     std::vector<Reading> rise;
@@ -403,11 +414,36 @@ std::optional<Approach> JointDetector::approachOf(const Return &r) const {
     const auto parabola = fitPolynomial(rise, 2);
     if (!parabola || approach->sigma <= parabola->sigma)
         return approach;
-    const double freedom = double(approach->count - 2);
-    const double allowed = m_restingSigmaK * m_restingSigmaK * (1 + 2 * std::sqrt(2 / freedom));
-    if (approach->sigma * approach->sigma <= allowed)
-        return approach;
-    return std::nullopt;
+    return withinWobble(approach->sigma, approach->count) ? approach : std::nullopt;
+}
+
+// A heater at full power brings its tip back along a straight line. A line through the whole climb
+// (from where it is under way, past the rounded bottom, to the first reading back) averages a slow
+// wobble over seconds, where a fit across the few readings around the edge follows it. None when
+// the readings scatter about that line more than the settled tip's own wobble allows (a curved
+// return), or it crosses the edge away from the readings around the return.
+std::optional<JointDetector::Crossing> JointDetector::straightClimbOf(const Return &r) const {
+    const double edge = bandEdge();
+    const double lowest = *m_readings.at(r.low).tip;
+    const double underWay = lowest + kStraightFromShare * (edge - lowest);
+    std::vector<Reading> climb;
+    for (size_t i = r.low + 1; i < m_readings.size() && i <= r.back + kClimbReadingsAfter; ++i)
+        if (!climb.empty() || *m_readings.at(i).tip >= underWay)
+            climb.push_back(readingOf(m_readings.at(i)));
+    if (climb.size() < kStraightMinReadings)
+        return std::nullopt;
+    const auto line = fitPolynomial(climb, 1);
+    if (!line || line->c1 <= 0)
+        return std::nullopt;
+    if (!withinWobble(line->sigma, line->count))
+        return std::nullopt;
+    const double reach = wobbleReachK() / line->slopePerMs(0);
+    const double below = double(m_readings.at(r.back - 1).timeMs);
+    const double in = double(m_readings.at(r.back).timeMs);
+    const auto t = crossingTime(*line, edge, below - reach, in + reach, r.straightMs);
+    if (!t)
+        return std::nullopt;
+    return Crossing{*t, crossingUncertaintyMs(*line, *t)};
 }
 
 // The edge's crossing on the way back. A return the readings show to be first order over its
@@ -437,6 +473,9 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
     if (const auto approach = approachOf(r)) {
         crossing = approach->crossingMs;
         uncertainty = qMax(uncertainty, 2 * approach->crossingSigmaMs);
+    } else if (const auto line = straightClimbOf(r)) {
+        crossing = line->timeMs;
+        uncertainty = qMax(uncertainty, line->uncertaintyMs);
     } else if (local && local->sigma > kWobbleSigmaK) {
         std::vector<Reading> wide;
         for (size_t i = r.low + 1; i < m_readings.size(); ++i)
@@ -456,6 +495,13 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
             uncertainty = qMin(uncertainty, crossingUncertaintyMs(*local, *t));
         }
     }
+    // A fit may place the return beyond the two readings around it (a wobble carried one across
+    // the edge), but a wobble can also bend a climb into the shape the fit expects: where they
+    // disagree, the truth may lie with either, so the interval reaches across both readings.
+    if (crossing > double(in.timeMs))
+        uncertainty = std::max(uncertainty, crossing - double(below.timeMs));
+    else if (crossing < double(below.timeMs))
+        uncertainty = std::max(uncertainty, double(in.timeMs) - crossing);
     // Whatever the fit, a reading may be off by as much as the settled tip wobbled, and a slow
     // wobble looks like the curve itself to a fit across a few readings: over the slope at the
     // return, that is how far the crossing may be off.

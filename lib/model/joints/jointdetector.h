@@ -122,7 +122,13 @@ private:
     [[nodiscard]] Return returnOf() const;
     [[nodiscard]] qint64 tailUntil() const;
     [[nodiscard]] std::optional<Approach> approachOf(const Return &r) const;
+    struct Crossing {
+        double timeMs = 0;
+        double uncertaintyMs = 0;
+    };
+    [[nodiscard]] std::optional<Crossing> straightClimbOf(const Return &r) const;
     [[nodiscard]] double wobbleReachK() const;
+    [[nodiscard]] bool withinWobble(double sigma, int count) const;
     void settleAfterRecovery(qint64 timeMs);
     [[nodiscard]] double bandEdge() const;
     [[nodiscard]] bool inBand(const PortReading &reading) const;
