@@ -3,9 +3,9 @@
 // journal another program writes, and never writes it.
 #include "clicommands.h"
 
+#include "base/elide.h"
 #include "journal/boardexport.h"
 #include "journal/journalreader.h"
-#include "protocol/elide.h"
 #include "report/boardpdf.h"
 
 #include <QDateTime>
@@ -20,7 +20,7 @@ struct CliBoardTr {
 };
 
 // The one output format asked for, or why the options are wrong.
-protocol::Outcome<QString> boardFormatOf(const CliOptions &o) {
+base::Outcome<QString> boardFormatOf(const CliOptions &o) {
     QStringList formats;
     for (const QString &flag : {QStringLiteral("json"), QStringLiteral("csv")})
         if (o.flags.contains(flag))
@@ -28,9 +28,9 @@ protocol::Outcome<QString> boardFormatOf(const CliOptions &o) {
     if (o.values.contains(QStringLiteral("pdf")))
         formats.append(QStringLiteral("pdf"));
     if (formats.size() > 1)
-        return protocol::failure(CliBoardTr::tr("give one of --json, --csv and --pdf FILE"));
+        return base::failure(CliBoardTr::tr("give one of --json, --csv and --pdf FILE"));
     if (o.args.size() != 1 || o.args.first().isEmpty())
-        return protocol::failure(CliBoardTr::tr("board takes one board serial"));
+        return base::failure(CliBoardTr::tr("board takes one board serial"));
     return formats.value(0, QStringLiteral("text"));
 }
 
@@ -56,7 +56,7 @@ int runBoard(const CliOptions &o, QTextStream &out, QTextStream &err) {
         err << "tipscope-cli: "
             << CliBoardTr::tr("the journal has no board '%1': no joint or event carries that "
                               "serial")
-                   .arg(protocol::elided(serial))
+                   .arg(base::elided(serial))
             << Qt::endl;
         return kUsage;
     }

@@ -1,9 +1,9 @@
 #include "clicommands.h"
 
+#include "base/elide.h"
 #include "cliunits.h"
 #include "model/device/displayunits.h"
 #include "model/device/writeproof.h"
-#include "protocol/elide.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 #include "protocol/valuecodec.h"
@@ -115,9 +115,9 @@ int runRead(CliSession &s) {
         const QByteArray code = arg.toUpper().toLatin1();
         const DeviceInfo *d = s.deviceFor(code, Direction::Read);
         if (!d) {
-            s.err()
-                << CliCommandsTr::tr("tipscope-cli: no device here can read '%1'").arg(elided(arg))
-                << Qt::endl;
+            s.err() << CliCommandsTr::tr("tipscope-cli: no device here can read '%1'")
+                           .arg(base::elided(arg))
+                    << Qt::endl;
             worst = qMax(worst, int(kRefused));
             continue;
         }
@@ -185,7 +185,7 @@ static QString readLimit(CliSession &s, const DeviceInfo &d, model::Parameter &l
         if (limit.value())
             return {};
         why = CliCommandsTr::tr("the device answered '%1', which is no value")
-                  .arg(elided(QString::fromLatin1(r->answer().data)));
+                  .arg(base::elided(QString::fromLatin1(r->answer().data)));
     }
     return why;
 }
@@ -222,21 +222,21 @@ static int checkDeviceLimits(CliSession &s, const DeviceInfo &d, const QByteArra
 
 // The data field of `write --raw`, held to the catalog like a typed value unless `force`; `wire`
 // gets its value, so that the device's limits are checked too.
-static Outcome<QByteArray> rawField(const ResolvedCommand &cmd, const QString &typed, bool force,
-                                    std::optional<qint64> *wire) {
+static base::Outcome<QByteArray> rawField(const ResolvedCommand &cmd, const QString &typed,
+                                          bool force, std::optional<qint64> *wire) {
     // Checked before toLatin1(), which would turn anything outside Latin-1 into '?'.
     const bool printable = std::all_of(typed.begin(), typed.end(), [](QChar c) {
         return c.unicode() >= 0x20 && c.unicode() <= 0x7e;
     });
     if (typed.isEmpty() || !printable)
-        return failure(CliCommandsTr::tr("the data field must be printable ASCII"));
+        return base::failure(CliCommandsTr::tr("the data field must be printable ASCII"));
     const QByteArray data = typed.toLatin1();
     if (data.size() > 32)
-        return failure(CliCommandsTr::tr("the data field is longer than 32 characters"));
+        return base::failure(CliCommandsTr::tr("the data field is longer than 32 characters"));
     if (force)
         return data;
     if (const QString why = validateData(cmd, data); !why.isEmpty())
-        return failure(CliCommandsTr::tr("%1 (--force sends it anyway)").arg(why));
+        return base::failure(CliCommandsTr::tr("%1 (--force sends it anyway)").arg(why));
     if (const auto value = decodeAnswer(cmd, data);
         value && !value->isText && cmd.spec->kind != ValueKind::Action)
         *wire = value->number;
@@ -257,7 +257,7 @@ int runWrite(CliSession &s) {
     const DeviceInfo *d = s.deviceFor(code, Direction::Write);
     if (!d) {
         s.err() << CliCommandsTr::tr("tipscope-cli: no device here accepts writes of '%1'")
-                       .arg(elided(args.at(0)))
+                       .arg(base::elided(args.at(0)))
                 << Qt::endl;
         return kRefused;
     }
@@ -379,7 +379,7 @@ int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const QString family = o.values.value(QStringLiteral("family")).toUpper();
     if (!family.isEmpty() && !cat.family(family)) {
         err << CliCommandsTr::tr("tipscope-cli: unknown family '%1'; known: %2")
-                   .arg(elided(family), cat.familyNames().join(QLatin1String(", ")))
+                   .arg(base::elided(family), cat.familyNames().join(QLatin1String(", ")))
             << Qt::endl;
         return kUsage;
     }

@@ -4,10 +4,10 @@
 // does. Both print and read the same `name=value` lines, so a script can round-trip them.
 #include "clicommands.h"
 
+#include "base/elide.h"
 #include "journal/workcontextfile.h"
 #include "model/context/workcontextjson.h"
 #include "model/joints/jointlimitsfile.h"
-#include "protocol/elide.h"
 
 #include <QFile>
 
@@ -30,7 +30,7 @@ void print(const model::WorkContext &c, QTextStream &out) {
 }
 
 // Applies one `name=value` line read from standard input.
-protocol::Outcome<void> applyLine(const QString &line, model::WorkContext &c) {
+base::Outcome<void> applyLine(const QString &line, model::WorkContext &c) {
     const QString name = line.section(QLatin1Char('='), 0, 0).trimmed();
     const QString value = line.section(QLatin1Char('='), 1).trimmed();
     if (name == kWorkOrder)
@@ -40,14 +40,14 @@ protocol::Outcome<void> applyLine(const QString &line, model::WorkContext &c) {
     else if (name == kOperator)
         c.operatorName = value;
     else
-        return protocol::failure(
+        return base::failure(
             CliContextTr::tr(
                 "'%1' is not a context line: write work_order=W, board_serial=S or operator=O")
-                .arg(protocol::elided(line)));
+                .arg(base::elided(line)));
     return {};
 }
 
-protocol::Outcome<model::WorkContext> changed(const CliOptions &o, model::WorkContext c) {
+base::Outcome<model::WorkContext> changed(const CliOptions &o, model::WorkContext c) {
     if (o.values.contains(QStringLiteral("work-order")))
         c.workOrder = o.values.value(QStringLiteral("work-order")).trimmed();
     if (o.values.contains(QStringLiteral("serial")))
@@ -57,13 +57,13 @@ protocol::Outcome<model::WorkContext> changed(const CliOptions &o, model::WorkCo
     if (o.flags.contains(QStringLiteral("stdin"))) {
         QFile in;
         if (!in.open(stdin, QIODevice::ReadOnly | QIODevice::Text))
-            return protocol::failure(CliContextTr::tr("cannot read standard input"));
+            return base::failure(CliContextTr::tr("cannot read standard input"));
         while (!in.atEnd()) {
             const QString line = QString::fromUtf8(in.readLine()).trimmed();
             if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
                 continue;
             if (const auto applied = applyLine(line, c); !applied)
-                return protocol::failure(applied.error());
+                return base::failure(applied.error());
         }
     }
     return c;

@@ -3,10 +3,10 @@
 // another program (the GUI, a monitor) writes, and never writes it.
 #include "clicommands.h"
 
+#include "base/elide.h"
 #include "journal/jointexport.h"
 #include "journal/journal.h"
 #include "journal/journalreader.h"
-#include "protocol/elide.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -25,7 +25,7 @@ struct CliJointsTr {
 
 // "24h", "30m", "7d", "90s" before now, or an ISO 8601 date or date and time (local time unless
 // it names its zone).
-protocol::Outcome<qint64> timeOf(const QString &text, qint64 nowMs) {
+base::Outcome<qint64> timeOf(const QString &text, qint64 nowMs) {
     static const QRegularExpression relative(QStringLiteral("^(\\d{1,6})([smhd])$"));
     if (const auto m = relative.match(text); m.hasMatch()) {
         static const QMap<QString, qint64> unitMs = {{QStringLiteral("s"), 1000},
@@ -38,19 +38,19 @@ protocol::Outcome<qint64> timeOf(const QString &text, qint64 nowMs) {
     if (!t.isValid())
         t = QDateTime(QDate::fromString(text, Qt::ISODate), QTime(0, 0));
     if (!t.isValid())
-        return protocol::failure(
+        return base::failure(
             CliJointsTr::tr(
                 "'%1' is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00")
-                .arg(protocol::elided(text)));
+                .arg(base::elided(text)));
     return t.toMSecsSinceEpoch();
 }
 
 // The one device the journal knows that `text` names: its key, its model, its address or its
 // line.
-protocol::Outcome<QString> deviceKeyOf(const JournalReader &reader, const QString &text) {
+base::Outcome<QString> deviceKeyOf(const JournalReader &reader, const QString &text) {
     const auto devices = reader.devices();
     if (!devices)
-        return protocol::failure(devices.error());
+        return base::failure(devices.error());
     QStringList keys;
     for (const model::DeviceIdentity &d : devices.value()) {
         const QString address =
@@ -63,15 +63,15 @@ protocol::Outcome<QString> deviceKeyOf(const JournalReader &reader, const QStrin
     if (keys.size() == 1)
         return keys.first();
     if (keys.isEmpty())
-        return protocol::failure(
-            CliJointsTr::tr("the journal has no device '%1'").arg(protocol::elided(text)));
-    return protocol::failure(CliJointsTr::tr("'%1' names %2 devices; give one of:\n  %3")
-                                 .arg(protocol::elided(text))
-                                 .arg(keys.size())
-                                 .arg(keys.join(QStringLiteral("\n  "))));
+        return base::failure(
+            CliJointsTr::tr("the journal has no device '%1'").arg(base::elided(text)));
+    return base::failure(CliJointsTr::tr("'%1' names %2 devices; give one of:\n  %3")
+                             .arg(base::elided(text))
+                             .arg(keys.size())
+                             .arg(keys.join(QStringLiteral("\n  "))));
 }
 
-protocol::Outcome<JointFilter> filterOf(const CliOptions &o, const JournalReader &reader) {
+base::Outcome<JointFilter> filterOf(const CliOptions &o, const JournalReader &reader) {
     JointFilter f;
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     for (const auto &[name, bound] : {std::pair{QStringLiteral("since"), &f.sinceMs},
@@ -80,20 +80,20 @@ protocol::Outcome<JointFilter> filterOf(const CliOptions &o, const JournalReader
             continue;
         const auto t = timeOf(o.values.value(name), now);
         if (!t)
-            return protocol::failure(QStringLiteral("--%1: %2").arg(name, t.error()));
+            return base::failure(QStringLiteral("--%1: %2").arg(name, t.error()));
         *bound = t.value();
     }
     if (o.values.contains(QStringLiteral("device"))) {
         const auto key = deviceKeyOf(reader, o.values.value(QStringLiteral("device")));
         if (!key)
-            return protocol::failure(QStringLiteral("--device: %1").arg(key.error()));
+            return base::failure(QStringLiteral("--device: %1").arg(key.error()));
         f.deviceKey = key.value();
     }
     if (o.values.contains(QStringLiteral("port"))) {
         bool ok = false;
         const int port = o.values.value(QStringLiteral("port")).toInt(&ok);
         if (!ok || port < 1 || port > 4)
-            return protocol::failure(CliJointsTr::tr("--port takes a port number from 1 to 4"));
+            return base::failure(CliJointsTr::tr("--port takes a port number from 1 to 4"));
         f.port = port;
     }
     if (o.values.contains(QStringLiteral("verdict"))) {
@@ -101,7 +101,7 @@ protocol::Outcome<JointFilter> filterOf(const CliOptions &o, const JournalReader
             o.values.value(QStringLiteral("verdict")).replace(QLatin1Char('-'), QLatin1Char(' '));
         f.verdict = model::jointVerdictFromName(v);
         if (!f.verdict)
-            return protocol::failure(
+            return base::failure(
                 CliJointsTr::tr("--verdict takes ok, slow-recovery, too-deep or incomplete"));
     }
     if (o.values.contains(QStringLiteral("tool")))

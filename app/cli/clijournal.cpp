@@ -88,7 +88,7 @@ int setRetention(const CliOptions &o, QTextStream &out, QTextStream &err) {
     // Read back from the file: the proof that it was stored, without counting the records.
     JournalReader reader;
     const auto opened = reader.open(journal.path());
-    const auto stored = opened ? reader.retentionDays() : protocol::failure(opened.error());
+    const auto stored = opened ? reader.retentionDays() : base::failure(opened.error());
     if (!stored || *stored != days) {
         const QString why = !stored ? stored.error() : journal.errorText();
         err << CliJournalTr::tr("tipscope-cli: the retention could not be stored: %1").arg(why)

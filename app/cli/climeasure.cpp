@@ -7,7 +7,7 @@
 #include "model/recording/chartcsv.h"
 #include "model/recording/chartcsvreader.h"
 
-#include "protocol/elide.h"
+#include "base/elide.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -79,7 +79,7 @@ int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err) {
     if (::stat(QFile::encodeName(o.args.first()).constData(), &st) == 0 && S_ISFIFO(st.st_mode))
         err << "# "
             << CliMeasureTr::tr("%1 is a FIFO: waiting for what is written into it (Ctrl-C stops)")
-                   .arg(protocol::elidedPath(o.args.first()))
+                   .arg(base::elidedPath(o.args.first()))
             << Qt::endl;
     const auto read = ChartCsvReader::readFile(o.args.first());
     if (!read) {

@@ -12,10 +12,10 @@
 #include "climonitorcsv.h"
 #include "clistop.h"
 
+#include "base/elide.h"
 #include "model/device/displayunits.h"
 #include "model/device/portmodel.h"
 #include "model/workspace/workspacefile.h"
-#include "protocol/elide.h"
 #include "protocol/valuecodec.h"
 #include "service/lineservice.h"
 
@@ -179,17 +179,17 @@ void followLine(MonitoredLine &line, QTextStream &err) {
         });
 }
 
-protocol::Outcome<std::optional<int>> intervalOf(const CliOptions &o) {
+base::Outcome<std::optional<int>> intervalOf(const CliOptions &o) {
     bool ok = true;
     const int ms = o.values.value(QStringLiteral("interval"), QStringLiteral("1000")).toInt(&ok);
     if (!ok || ms < 0)
-        return protocol::failure(CliMonitorTr::tr(
+        return base::failure(CliMonitorTr::tr(
             "tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)"));
     return std::optional<int>(ms);
 }
 
 // The lines to monitor: the workspace's, or the one the options name; demo lines at work.
-protocol::Outcome<WorkspaceFile> linesOf(const CliOptions &o) {
+base::Outcome<WorkspaceFile> linesOf(const CliOptions &o) {
     WorkspaceFile file;
     if (o.workspace.isEmpty()) {
         file.lines = {workspaceLineOf(o)};
@@ -197,9 +197,9 @@ protocol::Outcome<WorkspaceFile> linesOf(const CliOptions &o) {
     }
     auto loaded = WorkspaceFile::load(o.workspace);
     if (!loaded)
-        return protocol::failure(QStringLiteral("tipscope-cli: ") + loaded.error());
+        return base::failure(QStringLiteral("tipscope-cli: ") + loaded.error());
     if (loaded->lines.isEmpty())
-        return protocol::failure(
+        return base::failure(
             CliMonitorTr::tr("tipscope-cli: the workspace %1 has no lines").arg(o.workspace));
     file = loaded.value();
     for (WorkspaceLine &line : file.lines)
@@ -212,14 +212,14 @@ protocol::Outcome<WorkspaceFile> linesOf(const CliOptions &o) {
 // file or the shared one is created now, so a path that cannot be written is refused before
 // anything runs; a workspace line's own file once the line has a station, so a line that never
 // comes up leaves no empty file.
-protocol::Outcome<void> openCsv(const CliOptions &o, std::vector<MonitoredLine> &lines) {
+base::Outcome<void> openCsv(const CliOptions &o, std::vector<MonitoredLine> &lines) {
     if (!o.values.contains(QStringLiteral("csv")))
         return {};
     const QString path = o.values.value(QStringLiteral("csv"));
     if (o.flags.contains(QStringLiteral("csv-one-file"))) {
         auto shared = MonitorCsv::create(path, true);
         if (!shared)
-            return protocol::failure(shared.error());
+            return base::failure(shared.error());
         for (MonitoredLine &line : lines)
             line.csv = shared.value();
         return {};
@@ -227,25 +227,25 @@ protocol::Outcome<void> openCsv(const CliOptions &o, std::vector<MonitoredLine> 
     if (o.workspace.isEmpty()) {
         auto own = MonitorCsv::create(path, false);
         if (!own)
-            return protocol::failure(own.error());
+            return base::failure(own.error());
         lines.front().csv = own.value();
         return {};
     }
     const QFileInfo folder(QFileInfo(path).absolutePath());
     if (!folder.isDir() || !folder.isWritable())
-        return protocol::failure(
-            CliMonitorTr::tr("tipscope-cli: cannot write %1: %2")
-                .arg(folder.filePath(), folder.isDir() ? CliMonitorTr::tr("permission denied")
-                                                       : CliMonitorTr::tr("no such folder")));
+        return base::failure(CliMonitorTr::tr("tipscope-cli: cannot write %1: %2")
+                                 .arg(folder.filePath(), folder.isDir()
+                                                             ? CliMonitorTr::tr("permission denied")
+                                                             : CliMonitorTr::tr("no such folder")));
     QHash<QString, QString> lineOfFile;
     for (MonitoredLine &line : lines) {
         line.csvPath = MonitorCsv::fileFor(path, line.name);
         // Names made safe may meet: two lines must not write, and truncate, one file.
         if (const auto other = lineOfFile.constFind(line.csvPath); other != lineOfFile.cend())
-            return protocol::failure(
+            return base::failure(
                 CliMonitorTr::tr("tipscope-cli: lines %1 and %2 would both write %3; rename one")
-                    .arg(protocol::elided(*other), protocol::elided(line.name),
-                         protocol::elidedPath(line.csvPath)));
+                    .arg(base::elided(*other), base::elided(line.name),
+                         base::elidedPath(line.csvPath)));
         lineOfFile.insert(line.csvPath, line.name);
     }
     return {};

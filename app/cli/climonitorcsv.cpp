@@ -1,8 +1,8 @@
 #include "climonitorcsv.h"
 
-#include "model/io/csv.h"
-#include "model/io/filenamepart.h"
-#include "protocol/elide.h"
+#include "base/csv.h"
+#include "base/elide.h"
+#include "base/filenamepart.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -15,15 +15,15 @@ struct MonitorCsvTr {
 };
 } // namespace
 
-protocol::Outcome<std::shared_ptr<MonitorCsv>> MonitorCsv::create(const QString &path,
-                                                                  bool lineColumn) {
+base::Outcome<std::shared_ptr<MonitorCsv>> MonitorCsv::create(const QString &path,
+                                                              bool lineColumn) {
     std::shared_ptr<MonitorCsv> csv(new MonitorCsv(lineColumn));
     csv->m_file.setFileName(path);
     // Unbuffered: each row reaches the file when it is written, so a row that a full disk cuts
     // part way can be taken back whole (put()).
     if (!csv->m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered))
-        return protocol::failure(MonitorCsvTr::tr("tipscope-cli: cannot write %1: %2")
-                                     .arg(protocol::elidedPath(path), csv->m_file.errorString()));
+        return base::failure(MonitorCsvTr::tr("tipscope-cli: cannot write %1: %2")
+                                 .arg(base::elidedPath(path), csv->m_file.errorString()));
     return csv;
 }
 
@@ -44,7 +44,7 @@ bool MonitorCsv::write(const QString &line, const QString &timestamp, int port,
                        const QString &fields) {
     const QString row = m_lineColumn
                             ? QStringLiteral("%1,%2,%3,%4\n")
-                                  .arg(timestamp, model::csv::quoted(line))
+                                  .arg(timestamp, base::csv::quoted(line))
                                   .arg(port)
                                   .arg(fields)
                             : QStringLiteral("%1,%2,%3\n").arg(timestamp).arg(port).arg(fields);
@@ -76,7 +76,7 @@ QString MonitorCsv::fileFor(const QString &path, const QString &line) {
     const QFileInfo info(path);
     const QString suffix = info.suffix();
     const QString base = suffix.isEmpty() ? path : path.left(path.size() - suffix.size() - 1);
-    return base + QLatin1Char('-') + model::io::fileNamePart(line) +
+    return base + QLatin1Char('-') + base::io::fileNamePart(line) +
            (suffix.isEmpty() ? QString() : QLatin1Char('.') + suffix);
 }
 

@@ -6,7 +6,7 @@
 // line writes into one file that has a `line` column after the timestamp.
 #pragma once
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QFile>
 #include <QString>
@@ -17,8 +17,8 @@ namespace tipscope::cli {
 class MonitorCsv {
 public:
     // Creates (truncates) `path`; with `lineColumn`, rows carry the line's name.
-    [[nodiscard]] static protocol::Outcome<std::shared_ptr<MonitorCsv>> create(const QString &path,
-                                                                               bool lineColumn);
+    [[nodiscard]] static base::Outcome<std::shared_ptr<MonitorCsv>> create(const QString &path,
+                                                                           bool lineColumn);
 
     // A comment row naming the device a line monitors ("# cell-3: 01 DME-2C DME 9996780").
     [[nodiscard]] bool describe(const QString &line, const QString &device);
@@ -30,8 +30,8 @@ public:
     [[nodiscard]] QString errorText() const { return m_error; }
 
     // "plant.csv" for line "cell-3" is "plant-cell-3.csv"; a name without extension gets the
-    // line's name at its end. The line's name is made safe first (io::fileNamePart()): the file
-    // is in the folder of `path`, whatever the workspace names the line.
+    // line's name at its end. The line's name is made safe first (base::io::fileNamePart()): the
+    // file is in the folder of `path`, whatever the workspace names the line.
     [[nodiscard]] static QString fileFor(const QString &path, const QString &line);
 
 private:

@@ -37,12 +37,12 @@ const char kCfxPasswordVariable[] = "TIPSCOPE_CFX_PASSWORD";
 
 // --cfx amqp://HOST:PORT or amqps://HOST:PORT (TLS with the system's CAs), with its user and
 // address; the agent configuration's "cfx" section has the rest (docs/cfx.md).
-protocol::Outcome<cfx::CfxSettings> cfxOf(const CliOptions &o) {
+base::Outcome<cfx::CfxSettings> cfxOf(const CliOptions &o) {
     const QUrl url(o.values.value(QStringLiteral("cfx")), QUrl::StrictMode);
     const bool tls = url.scheme() == QLatin1String("amqps");
     if (!url.isValid() || (!tls && url.scheme() != QLatin1String("amqp")) || url.host().isEmpty() ||
         !url.userInfo().isEmpty() || (!url.path().isEmpty() && url.path() != QLatin1String("/")))
-        return protocol::failure(
+        return base::failure(
             CliMonitorMqttTr::tr("--cfx takes the AMQP broker as amqp://HOST:PORT or "
                                  "amqps://HOST:PORT (the user with --cfx-user, the password "
                                  "from %1)")
@@ -55,23 +55,23 @@ protocol::Outcome<cfx::CfxSettings> cfxOf(const CliOptions &o) {
     s.username = o.values.value(QStringLiteral("cfx-user"));
     s.address = o.values.value(QStringLiteral("cfx-address"), s.address);
     if (!cfx::isBrokerAddress(s.address))
-        return protocol::failure(CliMonitorMqttTr::tr(
+        return base::failure(CliMonitorMqttTr::tr(
             "--cfx-address takes RabbitMQ's form: /exchange/NAME, /exchange/NAME/KEY or "
             "/queue/NAME"));
     s.requestAddress = o.values.value(QStringLiteral("cfx-requests"));
     if (o.values.contains(QStringLiteral("cfx-requests")) && !cfx::isRequestQueue(s.requestAddress))
-        return protocol::failure(
+        return base::failure(
             CliMonitorMqttTr::tr("--cfx-requests takes a queue of the broker: /queue/NAME"));
     if (!s.username.isEmpty() && qEnvironmentVariableIsSet(kCfxPasswordVariable)) {
         auto password = mqtt::readSecretEnvironment(QLatin1String(kCfxPasswordVariable));
         if (!password)
-            return protocol::failure(password.error());
+            return base::failure(password.error());
         s.password = password.value();
     }
     return s;
 }
 
-protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
+base::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     plant::AgentConfig c;
     QString host;
     quint16 port = 0;
@@ -79,30 +79,30 @@ protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     c.mqtt = o.values.contains(QStringLiteral("mqtt"));
     if (c.mqtt &&
         !link::TcpTransport::parseHostPort(o.values.value(QStringLiteral("mqtt")), &host, &port))
-        return protocol::failure(CliMonitorMqttTr::tr("--mqtt takes the broker as HOST:PORT"));
+        return base::failure(CliMonitorMqttTr::tr("--mqtt takes the broker as HOST:PORT"));
     c.broker.host = host;
     c.broker.port = port;
     c.broker.username = o.values.value(QStringLiteral("mqtt-user"));
     if (!c.broker.username.isEmpty() && qEnvironmentVariableIsSet(kPasswordVariable)) {
         auto password = mqtt::readSecretEnvironment(QLatin1String(kPasswordVariable));
         if (!password)
-            return protocol::failure(password.error());
+            return base::failure(password.error());
         c.broker.password = password.value();
     }
     c.site = o.values.value(QStringLiteral("site"), QStringLiteral("site"));
     if (c.site.trimmed().isEmpty())
-        return protocol::failure(CliMonitorMqttTr::tr("--site takes the site's name"));
+        return base::failure(CliMonitorMqttTr::tr("--site takes the site's name"));
     bool ok = true;
     c.live.intervalMs =
         o.values.value(QStringLiteral("interval"), QStringLiteral("1000")).toInt(&ok);
     if (!ok || c.live.intervalMs < 100 || c.live.intervalMs > 3600000)
-        return protocol::failure(
+        return base::failure(
             CliMonitorMqttTr::tr("--interval takes milliseconds from 100 to 3600000"));
     c.journalPath = o.values.value(QStringLiteral("journal"));
     if (o.values.contains(QStringLiteral("cfx"))) {
         auto cfx = cfxOf(o);
         if (!cfx)
-            return protocol::failure(cfx.error());
+            return base::failure(cfx.error());
         c.cfx = cfx.value();
     }
     // Not the agent's own id, so a trial beside a running agent does not take its session over.
@@ -113,7 +113,7 @@ protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     } else {
         auto file = model::WorkspaceFile::load(o.workspace);
         if (!file)
-            return protocol::failure(file.error());
+            return base::failure(file.error());
         c.workspace = file.value();
         c.workspacePath = o.workspace;
     }

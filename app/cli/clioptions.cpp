@@ -1,8 +1,8 @@
 #include "clioptions.h"
 
+#include "base/elide.h"
 #include "link/ports/devicepath.h"
 #include "link/tcptransport.h"
-#include "protocol/elide.h"
 
 namespace tipscope::cli {
 
@@ -151,7 +151,7 @@ QString CliParser::usage() {
         "accessible, 11 disk full or failing.\n");
 }
 
-protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
+base::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
     CliOptions o;
     o.line.serial.portName.clear();
     bool haveTransport = false;
@@ -161,7 +161,7 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
         if (!isOption) {
             if (o.command.isEmpty()) {
                 if (!kCommands.contains(a))
-                    return protocol::failure(tr("unknown command '%1'").arg(protocol::elided(a)));
+                    return base::failure(tr("unknown command '%1'").arg(base::elided(a)));
                 o.command = a;
             } else {
                 o.args.append(a);
@@ -190,11 +190,11 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
         if (!o.command.isEmpty() && kCommandOptions.value(o.command).contains(name)) {
             if (takesValue(o.command, name)) {
                 if (!takeValue(&v))
-                    return protocol::failure(tr("--%1 needs a value").arg(name));
+                    return base::failure(tr("--%1 needs a value").arg(name));
                 o.values.insert(name, v);
             } else {
                 if (hasInline)
-                    return protocol::failure(tr("--%1 takes no value").arg(name));
+                    return base::failure(tr("--%1 takes no value").arg(name));
                 o.flags.append(name);
             }
         } else if (name == QLatin1String("help")) {
@@ -205,19 +205,19 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
             o.verbose = true;
         } else if (name == QLatin1String("demo") || name == QLatin1String("demo-activity")) {
             if (haveTransport)
-                return protocol::failure(tr("give only one of --port, --tcp and --demo"));
+                return base::failure(tr("give only one of --port, --tcp and --demo"));
             haveTransport = o.demo = true;
             o.demoActivity = name == QLatin1String("demo-activity");
             o.line.kind = link::LineSettings::Kind::Demo;
         } else if (name == QLatin1String("workspace")) {
             if (haveTransport || !takeValue(&v) || v.isEmpty())
-                return protocol::failure(tr("--workspace takes a file, and only one of --port, "
-                                            "--tcp, --demo, --workspace"));
+                return base::failure(tr("--workspace takes a file, and only one of --port, "
+                                        "--tcp, --demo, --workspace"));
             haveTransport = true;
             o.workspace = v;
         } else if (name == QLatin1String("port")) {
             if (haveTransport || !takeValue(&v) || v.isEmpty())
-                return protocol::failure(
+                return base::failure(
                     tr("--port takes a device, and only one of --port, --tcp, --demo"));
             haveTransport = true;
             o.line.kind = link::LineSettings::Kind::Serial;
@@ -225,24 +225,24 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
         } else if (name == QLatin1String("tcp")) {
             if (haveTransport || !takeValue(&v) ||
                 !link::TcpTransport::parseHostPort(v, &o.line.tcpHost, &o.line.tcpPort))
-                return protocol::failure(
+                return base::failure(
                     tr("--tcp takes HOST:PORT, and only one of --port, --tcp, --demo"));
             haveTransport = true;
             o.line.kind = link::LineSettings::Kind::Tcp;
         } else if (name == QLatin1String("baud")) {
             if (!takeValue(&v) || !parseInt(v, 50, 4'000'000, &o.line.serial.baudRate))
-                return protocol::failure(tr("--baud takes a rate such as 19200"));
+                return base::failure(tr("--baud takes a rate such as 19200"));
         } else if (name == QLatin1String("parity")) {
             static const QMap<QString, QSerialPort::Parity> parities = {
                 {QStringLiteral("none"), QSerialPort::NoParity},
                 {QStringLiteral("even"), QSerialPort::EvenParity},
                 {QStringLiteral("odd"), QSerialPort::OddParity}};
             if (!takeValue(&v) || !parities.contains(v))
-                return protocol::failure(tr("--parity takes none, even or odd"));
+                return base::failure(tr("--parity takes none, even or odd"));
             o.line.serial.parity = parities.value(v);
         } else if (name == QLatin1String("stop-bits")) {
             if (!takeValue(&v) || (v != QLatin1String("1") && v != QLatin1String("2")))
-                return protocol::failure(tr("--stop-bits takes 1 or 2"));
+                return base::failure(tr("--stop-bits takes 1 or 2"));
             o.line.serial.stopBits =
                 v == QLatin1String("2") ? QSerialPort::TwoStop : QSerialPort::OneStop;
         } else if (name == QLatin1String("addr")) {
@@ -250,7 +250,7 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
             if (!takeValue(&v) || !parseInt(v.section(QLatin1Char(':'), 0, 0), 0, 99, &src) ||
                 !parseInt(v.section(QLatin1Char(':'), 1), 0, 99, &tgt) ||
                 v.count(QLatin1Char(':')) != 1)
-                return protocol::failure(
+                return base::failure(
                     tr("--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)"));
             o.addressing = CliOptions::Addressing::With;
             o.line.queue.robotAddress = src;
@@ -259,29 +259,29 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
             o.addressing = CliOptions::Addressing::Without;
         } else if (name == QLatin1String("timeout")) {
             if (!takeValue(&v) || !parseInt(v, 1, 60'000, &o.line.queue.turnaroundMs))
-                return protocol::failure(tr("--timeout takes milliseconds from 1 to 60000"));
+                return base::failure(tr("--timeout takes milliseconds from 1 to 60000"));
         } else if (name == QLatin1String("retries")) {
             if (!takeValue(&v) || !parseInt(v, 0, 10, &o.line.queue.retries))
-                return protocol::failure(tr("--retries takes a number from 0 to 10"));
+                return base::failure(tr("--retries takes a number from 0 to 10"));
         } else {
-            const QString shown = protocol::elided(name);
-            return protocol::failure(o.command.isEmpty()
-                                         ? tr("unknown option --%1").arg(shown)
-                                         : tr("'%1' has no option --%2").arg(o.command, shown));
+            const QString shown = base::elided(name);
+            return base::failure(o.command.isEmpty()
+                                     ? tr("unknown option --%1").arg(shown)
+                                     : tr("'%1' has no option --%2").arg(o.command, shown));
         }
     }
     if (o.showHelp || o.showVersion)
         return o;
     if (o.command.isEmpty())
-        return protocol::failure(tr("no command given"));
+        return base::failure(tr("no command given"));
     if (!o.workspace.isEmpty() && !kWorkspaceCommands.contains(o.command))
-        return protocol::failure(
+        return base::failure(
             tr("--workspace runs detect, monitor, dump or joints, not %1").arg(o.command));
     if (o.flags.contains(QStringLiteral("csv-one-file")) &&
         (o.workspace.isEmpty() || !o.values.contains(QStringLiteral("csv"))))
-        return protocol::failure(tr("--csv-one-file goes with --workspace and --csv FILE"));
+        return base::failure(tr("--csv-one-file goes with --workspace and --csv FILE"));
     if (!haveTransport && !kOffline.contains(o.command))
-        return protocol::failure(
+        return base::failure(
             tr("say where the device is: --port DEVICE, --tcp HOST:PORT or --demo"));
     return o;
 }

@@ -3,11 +3,11 @@
 // and a command's own options may follow it (`read --raw ST1`, `write LEN --raw 00200`).
 #pragma once
 
+#include "base/outcome.h"
 #include "link/line.h"
 #include "model/context/workcontext.h"
 #include "model/joints/jointlimitrules.h"
 #include "model/session.h"
-#include "protocol/outcome.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -58,7 +58,7 @@ class CliParser {
     Q_DECLARE_TR_FUNCTIONS(CliParser)
 public:
     // The options, or the usage error.
-    [[nodiscard]] static protocol::Outcome<CliOptions> parse(const QStringList &arguments);
+    [[nodiscard]] static base::Outcome<CliOptions> parse(const QStringList &arguments);
     [[nodiscard]] static QString usage();
 };
 

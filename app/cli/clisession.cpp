@@ -4,9 +4,9 @@
 
 #include "clicommands.h"
 
+#include "base/elide.h"
 #include "model/device/feedermodel.h"
 #include "model/device/stationmodel.h"
-#include "protocol/elide.h"
 #include "sim/simline.h"
 
 #include <QEventLoop>
@@ -67,7 +67,7 @@ void CliSession::waitForLine() {
 QString CliSession::withPortElided(QString message) const {
     const QString &port = m_options.line.serial.portName;
     if (m_options.line.kind == LineSettings::Kind::Serial && !port.isEmpty())
-        message.replace(port, protocol::elidedPath(port));
+        message.replace(port, base::elidedPath(port));
     return message;
 }
 

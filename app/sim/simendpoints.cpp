@@ -18,8 +18,8 @@
 
 namespace tipscope::sim {
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 namespace {
 

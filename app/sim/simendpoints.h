@@ -7,7 +7,7 @@
 // requests costs no more memory than that either.
 #pragma once
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QObject>
 #include <QString>
@@ -31,7 +31,7 @@ class PtyEndpoint : public QObject {
 public:
     PtyEndpoint(SimLine &line, const QString &linkPath, QObject *parent = nullptr);
     ~PtyEndpoint() override;
-    [[nodiscard]] protocol::Outcome<void> plug();
+    [[nodiscard]] base::Outcome<void> plug();
     void unplug();
     [[nodiscard]] QString slavePath() const { return m_slavePath; }
 
@@ -49,7 +49,7 @@ class SerialDeviceEndpoint : public QObject {
     Q_OBJECT
 public:
     SerialDeviceEndpoint(SimLine &line, const QString &device, QObject *parent = nullptr);
-    [[nodiscard]] protocol::Outcome<void> open();
+    [[nodiscard]] base::Outcome<void> open();
 
 private:
     SimLine &m_line;
@@ -60,7 +60,7 @@ class TcpEndpoint : public QObject {
     Q_OBJECT
 public:
     TcpEndpoint(SimLine &line, QObject *parent = nullptr);
-    [[nodiscard]] protocol::Outcome<void> listen(const QString &hostPort);
+    [[nodiscard]] base::Outcome<void> listen(const QString &hostPort);
     [[nodiscard]] quint16 port() const;
 
 private:

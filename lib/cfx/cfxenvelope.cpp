@@ -6,8 +6,8 @@
 
 namespace tipscope::cfx {
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 namespace {
 

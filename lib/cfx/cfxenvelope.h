@@ -10,7 +10,7 @@
 // a journal record takes the record's id, so a message sent again is the same message.
 #pragma once
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QByteArray>
 #include <QDateTime>
@@ -41,7 +41,7 @@ struct Envelope {
     [[nodiscard]] QByteArray toBytes() const; // compact UTF-8 JSON
     // A received envelope (a request on the endpoint's queue): bounded, and every envelope field
     // of the right kind, or a failure naming what is wrong.
-    [[nodiscard]] static protocol::Outcome<Envelope> fromBytes(const QByteArray &bytes);
+    [[nodiscard]] static base::Outcome<Envelope> fromBytes(const QByteArray &bytes);
 };
 
 // How the body of an AMQP message is encoded (the SDK's CFXCodec).
@@ -73,8 +73,8 @@ struct AmqpRequest {
 
 [[nodiscard]] AmqpMessage toAmqpMessage(const Envelope &envelope, Codec codec);
 // The envelope inside a received body, unpacked first when its encoding is "gzip".
-[[nodiscard]] protocol::Outcome<Envelope> envelopeFromAmqp(const QByteArray &body,
-                                                           const QString &contentEncoding);
+[[nodiscard]] base::Outcome<Envelope> envelopeFromAmqp(const QByteArray &body,
+                                                       const QString &contentEncoding);
 
 // "CFX.ResourcePerformance.FaultOccurred" → "CFX.ResourcePerformance.FaultOccurred, CFX".
 [[nodiscard]] QString sdkTypeName(const QString &messageName);
@@ -92,6 +92,6 @@ inline const QJsonValue kCfxNull{QJsonValue::Null};
 // gzip (RFC 1952) as the SDK's GZipStream writes and reads it.
 [[nodiscard]] QByteArray gzip(const QByteArray &data);
 // Refuses a damaged stream and one that unpacks to more than `maxBytes`.
-[[nodiscard]] protocol::Outcome<QByteArray> gunzip(const QByteArray &data, qsizetype maxBytes);
+[[nodiscard]] base::Outcome<QByteArray> gunzip(const QByteArray &data, qsizetype maxBytes);
 
 } // namespace tipscope::cfx

@@ -12,7 +12,7 @@
 
 #include "cfxmessages.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 namespace tipscope::cfx {
 
@@ -39,8 +39,8 @@ struct Answer {
 [[nodiscard]] Message getEndpointInformationResponse(const EndpointIdentity &endpoint,
                                                      const RequestPlace &place);
 // The answer to `request`, or why there is none.
-[[nodiscard]] protocol::Outcome<Answer> answerRequest(const AmqpRequest &request,
-                                                      const QList<EndpointIdentity> &endpoints,
-                                                      const RequestPlace &place);
+[[nodiscard]] base::Outcome<Answer> answerRequest(const AmqpRequest &request,
+                                                  const QList<EndpointIdentity> &endpoints,
+                                                  const RequestPlace &place);
 
 } // namespace tipscope::cfx

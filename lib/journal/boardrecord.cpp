@@ -10,8 +10,8 @@
 
 namespace tipscope::journal {
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 BoardResult boardResultOf(const QMap<model::JointVerdict, int> &verdicts) {
     if (verdicts.isEmpty())

@@ -22,7 +22,7 @@
 
 #include "journaltypes.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QMap>
 
@@ -67,8 +67,8 @@ struct BoardRecord {
 
 // The record of `serial`; empty (isEmpty()) when the journal has no joint or event stamped with
 // it. Fails only when the journal cannot be read.
-[[nodiscard]] protocol::Outcome<BoardRecord> buildBoardRecord(const JournalReader &reader,
-                                                              const QString &serial);
+[[nodiscard]] base::Outcome<BoardRecord> buildBoardRecord(const JournalReader &reader,
+                                                          const QString &serial);
 
 // How many of the board's joints carry no limits (journaled before the journal kept them).
 [[nodiscard]] int jointsWithoutLimits(const BoardRecord &record);

@@ -1,6 +1,6 @@
 #include "jointexport.h"
 
-#include "model/io/csv.h"
+#include "base/csv.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -57,7 +57,7 @@ QString csvField(const QJsonValue &value) {
         text = value.toString();
     // The one CSV cell rule of every export (model/io/csv.h): a line break inside a cell becomes
     // a space, so that one record stays one line for every tool that reads it.
-    return model::csv::quoted(text);
+    return base::csv::quoted(text);
 }
 } // namespace
 

@@ -7,14 +7,14 @@
 
 namespace tipscope::journal {
 
-protocol::Outcome<QJsonObject> jointStatistics(const JournalReader &reader, qint64 sinceMs,
-                                               qint64 untilMs) {
+base::Outcome<QJsonObject> jointStatistics(const JournalReader &reader, qint64 sinceMs,
+                                           qint64 untilMs) {
     JointFilter range;
     range.sinceMs = sinceMs;
     range.untilMs = untilMs;
     const auto ports = reader.recoveryByPort(range);
     if (!ports)
-        return protocol::failure(ports.error());
+        return base::failure(ports.error());
     QJsonArray out;
     for (const PortRecovery &p : ports.value()) {
         JointFilter one = range;
@@ -22,7 +22,7 @@ protocol::Outcome<QJsonObject> jointStatistics(const JournalReader &reader, qint
         one.port = p.port;
         const auto verdicts = reader.verdictCounts(one);
         if (!verdicts)
-            return protocol::failure(verdicts.error());
+            return base::failure(verdicts.error());
         QJsonObject port{{QStringLiteral("device"), p.device.description()},
                          {QStringLiteral("deviceKey"), p.device.key()},
                          {QStringLiteral("port"), p.port},

@@ -13,8 +13,8 @@
 
 namespace tipscope::journal {
 
-[[nodiscard]] protocol::Outcome<QJsonObject> jointStatistics(const JournalReader &reader,
-                                                             qint64 sinceMs, qint64 untilMs);
+[[nodiscard]] base::Outcome<QJsonObject> jointStatistics(const JournalReader &reader,
+                                                         qint64 sinceMs, qint64 untilMs);
 // The last 24 hours of the journal at `path`, for the report.
 [[nodiscard]] QJsonObject lastDayOfJoints(const QString &path);
 

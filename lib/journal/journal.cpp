@@ -182,11 +182,11 @@ int Journal::retentionDays() const {
     return m_shared->retentionDays;
 }
 
-protocol::Outcome<void> Journal::setRetentionDays(int days) {
+base::Outcome<void> Journal::setRetentionDays(int days) {
     if (const auto valid = checkRetentionDays(days); !valid)
         return valid;
     if (!m_thread.isRunning())
-        return protocol::failure(tr("The journal is closed.")); // the writer is gone
+        return base::failure(tr("The journal is closed.")); // the writer is gone
     {
         QMutexLocker lock(&m_shared->mutex); // in force at once; the writer stores it
         m_shared->retentionDays = days;

@@ -24,9 +24,9 @@
 //   Queries go through JournalReader, which has its own connection.
 #pragma once
 
+#include "base/outcome.h"
 #include "journalstate.h"
 #include "journaltypes.h"
-#include "protocol/outcome.h"
 
 #include <QObject>
 #include <QThread>
@@ -75,7 +75,7 @@ public:
     [[nodiscard]] int retentionDays() const;
     // Refuses an impossible value at once; stores a possible one (when the file cannot be
     // written, as soon as it can) and prunes to it.
-    protocol::Outcome<void> setRetentionDays(int days);
+    base::Outcome<void> setRetentionDays(int days);
 
     [[nodiscard]] JournalState state() const;
     [[nodiscard]] QString errorText() const;

@@ -32,7 +32,7 @@ QJsonObject journalHealth(const Journal &journal) {
                     {QStringLiteral("pending"), journal.pendingCount()}};
     JournalReader reader;
     const auto opened = reader.open(journal.path());
-    const auto summary = opened ? reader.summary() : protocol::failure(opened.error());
+    const auto summary = opened ? reader.summary() : base::failure(opened.error());
     if (!summary) {
         out.insert(QStringLiteral("readError"), summary.error());
         return out;

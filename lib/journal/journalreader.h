@@ -13,7 +13,7 @@
 #include "journalstate.h"
 #include "journaltypes.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QMap>
 #include <QString>
@@ -27,38 +27,37 @@ public:
     JournalReader(const JournalReader &) = delete;
     JournalReader &operator=(const JournalReader &) = delete;
 
-    [[nodiscard]] protocol::Outcome<void> open(const QString &path);
+    [[nodiscard]] base::Outcome<void> open(const QString &path);
     // open() unless already open: for a forwarder that reads on, and opens again after failing.
-    [[nodiscard]] protocol::Outcome<void> keepOpen(const QString &path);
+    [[nodiscard]] base::Outcome<void> keepOpen(const QString &path);
     [[nodiscard]] bool isOpen() const { return m_open; }
     // SQLite's quick_check over the whole file: a journal that opens may still be damaged inside.
     // It reads every page, so it is for commands that report on the journal, not the poll path.
-    [[nodiscard]] protocol::Outcome<void> check();
+    [[nodiscard]] base::Outcome<void> check();
     // Why the last open() or check() failed, by kind; None after good ones.
     [[nodiscard]] JournalProblem problem() const { return m_problem; }
     [[nodiscard]] QString path() const { return m_path; }
 
-    [[nodiscard]] protocol::Outcome<QList<StoredJoint>> joints(const JointFilter &filter) const;
-    [[nodiscard]] protocol::Outcome<QList<StoredEvent>> events(const EventFilter &filter) const;
+    [[nodiscard]] base::Outcome<QList<StoredJoint>> joints(const JointFilter &filter) const;
+    [[nodiscard]] base::Outcome<QList<StoredEvent>> events(const EventFilter &filter) const;
     // Ignores the filter's limit and order.
-    [[nodiscard]] protocol::Outcome<qint64> countJoints(const JointFilter &filter) const;
-    [[nodiscard]] protocol::Outcome<QMap<model::JointVerdict, qint64>>
+    [[nodiscard]] base::Outcome<qint64> countJoints(const JointFilter &filter) const;
+    [[nodiscard]] base::Outcome<QMap<model::JointVerdict, qint64>>
     verdictCounts(const JointFilter &filter) const;
     // Per device and port, in key and port order.
-    [[nodiscard]] protocol::Outcome<QList<PortRecovery>>
+    [[nodiscard]] base::Outcome<QList<PortRecovery>>
     recoveryByPort(const JointFilter &filter) const;
 
     // Store-and-forward: the oldest unsent records with a row id above `afterId`, in order.
-    [[nodiscard]] protocol::Outcome<QList<StoredJoint>> unsentJoints(qint64 afterId,
-                                                                     int limit) const;
-    [[nodiscard]] protocol::Outcome<QList<StoredEvent>>
+    [[nodiscard]] base::Outcome<QList<StoredJoint>> unsentJoints(qint64 afterId, int limit) const;
+    [[nodiscard]] base::Outcome<QList<StoredEvent>>
     unsentEvents(qint64 afterId, int limit, SentChannel channel = SentChannel::Mqtt) const;
-    [[nodiscard]] protocol::Outcome<JournalSummary> summary() const;
+    [[nodiscard]] base::Outcome<JournalSummary> summary() const;
     // The retention stored in the file (journalsettings.h), without counting anything.
-    [[nodiscard]] protocol::Outcome<int> retentionDays() const;
+    [[nodiscard]] base::Outcome<int> retentionDays() const;
 
     // Every device the journal has a record of, in key order.
-    [[nodiscard]] protocol::Outcome<QList<model::DeviceIdentity>> devices() const;
+    [[nodiscard]] base::Outcome<QList<model::DeviceIdentity>> devices() const;
 
 private:
     void close();

@@ -12,8 +12,8 @@
 
 namespace tipscope::journal {
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 namespace {
 

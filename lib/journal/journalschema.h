@@ -13,7 +13,7 @@
 
 #include "journalstate.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QSqlDatabase>
 #include <QString>
@@ -27,19 +27,19 @@ inline constexpr int kJournalApplicationId = 0x54695053; // "TiPS"
 // synchronous commits, and migrated. `maxSizeBytes` > 0 caps the file. On failure the
 // connection is removed again, the reason is in the user's language and `problem`, when given,
 // says its kind.
-[[nodiscard]] protocol::Outcome<void> openJournalDatabase(const QString &path,
-                                                          const QString &connectionName,
-                                                          qint64 maxSizeBytes,
-                                                          JournalProblem *problem = nullptr);
+[[nodiscard]] base::Outcome<void> openJournalDatabase(const QString &path,
+                                                      const QString &connectionName,
+                                                      qint64 maxSizeBytes,
+                                                      JournalProblem *problem = nullptr);
 // A connection that only reads (SQLite's read-only open): nothing is configured or migrated,
 // so a journal on a read-only mount, or another user's, can be read. A foreign or newer file is
 // refused as by openJournalDatabase(); `version` gets the file's schema, which an older file
 // must be migrated from before the reader's queries fit it.
-[[nodiscard]] protocol::Outcome<void> openJournalForReading(const QString &path,
-                                                            const QString &connectionName,
-                                                            qint64 *version,
-                                                            JournalProblem *problem = nullptr);
+[[nodiscard]] base::Outcome<void> openJournalForReading(const QString &path,
+                                                        const QString &connectionName,
+                                                        qint64 *version,
+                                                        JournalProblem *problem = nullptr);
 // Brings an open database to kJournalSchemaVersion.
-[[nodiscard]] protocol::Outcome<void> migrateJournal(QSqlDatabase &db);
+[[nodiscard]] base::Outcome<void> migrateJournal(QSqlDatabase &db);
 
 } // namespace tipscope::journal

@@ -5,7 +5,7 @@
 // one keeps records for kDefaultRetentionDays.
 #pragma once
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QSqlDatabase>
 
@@ -16,9 +16,9 @@ inline constexpr int kDefaultRetentionDays = 365;
 inline constexpr int kMaxRetentionDays = 36500;
 
 // The stored retention, or kDefaultRetentionDays when none was stored.
-[[nodiscard]] protocol::Outcome<int> readRetentionDays(QSqlDatabase &db);
-[[nodiscard]] protocol::Outcome<void> storeRetentionDays(QSqlDatabase &db, int days);
+[[nodiscard]] base::Outcome<int> readRetentionDays(QSqlDatabase &db);
+[[nodiscard]] base::Outcome<void> storeRetentionDays(QSqlDatabase &db, int days);
 // Why `days` cannot be a retention, or nothing when it can.
-[[nodiscard]] protocol::Outcome<void> checkRetentionDays(int days);
+[[nodiscard]] base::Outcome<void> checkRetentionDays(int days);
 
 } // namespace tipscope::journal

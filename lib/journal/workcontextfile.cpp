@@ -1,8 +1,8 @@
 #include "workcontextfile.h"
 
+#include "base/atomicsave.h"
+#include "base/jsonfile.h"
 #include "model/context/workcontextjson.h"
-#include "model/io/atomicsave.h"
-#include "model/io/jsonfile.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -18,8 +18,8 @@ struct WorkContextFileTr {
     Q_DECLARE_TR_FUNCTIONS(WorkContextFile)
 };
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 constexpr qint64 kMaxBytes = 64 * 1024;
 } // namespace
@@ -30,9 +30,9 @@ QString workContextPathFor(const QString &journalPath) {
 }
 
 Outcome<model::WorkContext> readWorkContext(const QString &path) {
-    const auto read = model::io::readJsonObject(path, kMaxBytes);
-    if (const auto *problem = std::get_if<model::io::JsonFileProblem>(&read)) {
-        using Kind = model::io::JsonFileProblem::Kind;
+    const auto read = base::io::readJsonObject(path, kMaxBytes);
+    if (const auto *problem = std::get_if<base::io::JsonFileProblem>(&read)) {
+        using Kind = base::io::JsonFileProblem::Kind;
         switch (problem->kind) {
         case Kind::Missing:
             return model::WorkContext{};
@@ -58,7 +58,7 @@ Outcome<void> writeWorkContext(const QString &path, const model::WorkContext &co
     if (const QString why = model::workContextProblem(context); !why.isEmpty())
         return failure(why);
     QDir().mkpath(QFileInfo(path).absolutePath());
-    return model::io::saveAtomically(
+    return base::io::saveAtomically(
         path, QJsonDocument(model::workContextToJson(context)).toJson(QJsonDocument::Indented));
 }
 

@@ -13,7 +13,7 @@
 
 #include "journal.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QFileSystemWatcher>
 #include <QObject>
@@ -22,9 +22,9 @@ namespace tipscope::journal {
 
 // context.json beside the journal at `journalPath` (by default, Journal::defaultPath()'s).
 [[nodiscard]] QString workContextPathFor(const QString &journalPath = QString());
-[[nodiscard]] protocol::Outcome<model::WorkContext> readWorkContext(const QString &path);
-[[nodiscard]] protocol::Outcome<void> writeWorkContext(const QString &path,
-                                                       const model::WorkContext &context);
+[[nodiscard]] base::Outcome<model::WorkContext> readWorkContext(const QString &path);
+[[nodiscard]] base::Outcome<void> writeWorkContext(const QString &path,
+                                                   const model::WorkContext &context);
 
 class WorkContextFollower : public QObject {
     Q_OBJECT
@@ -34,7 +34,7 @@ public:
 
     [[nodiscard]] QString path() const { return m_path; }
     // Writes the file (and so tells every follower, this one included).
-    [[nodiscard]] protocol::Outcome<void> set(const model::WorkContext &context);
+    [[nodiscard]] base::Outcome<void> set(const model::WorkContext &context);
 
 Q_SIGNALS:
     void contextChanged(const model::WorkContext &context);

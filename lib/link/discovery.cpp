@@ -2,9 +2,9 @@
 
 #include "requestqueue.h"
 
+#include "base/elide.h"
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
-#include "protocol/elide.h"
 
 #include <climits>
 
@@ -29,7 +29,7 @@ QString IdentifyFailure::text(std::optional<int> address) const {
         return Discovery::tr("the catalog names no command that identifies a device");
     case Kind::UnknownModel:
         return Discovery::tr("the device reports the model '%1', which TipScope does not know")
-            .arg(elided(model));
+            .arg(base::elided(model));
     case Kind::Unanswered:
         break;
     }
@@ -228,9 +228,9 @@ void Discovery::settle() {
 
 Identification Discovery::identificationOf(const std::optional<DeviceInfo> &found) const {
     if (!found)
-        return protocol::failure(*m_failure);
+        return base::failure(*m_failure);
     if (found->family.isEmpty())
-        return protocol::failure(
+        return base::failure(
             IdentifyFailure{IdentifyFailure::Kind::UnknownModel, {}, {}, found->model, m_asked});
     return *found;
 }

@@ -21,7 +21,7 @@
 #include "reply.h"
 #include "requestqueue.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QHash>
 #include <QList>
@@ -65,7 +65,7 @@ struct IdentifyFailure {
     [[nodiscard]] QString text(std::optional<int> address) const;
 };
 
-using Identification = protocol::Outcome<DeviceInfo, IdentifyFailure>;
+using Identification = base::Outcome<DeviceInfo, IdentifyFailure>;
 
 class Discovery : public QObject {
     Q_OBJECT

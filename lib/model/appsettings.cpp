@@ -94,7 +94,7 @@ TelemetryTiers AppSettings::telemetryTiers() const {
     return t;
 }
 
-protocol::Outcome<Session::Settings> AppSettings::sessionSettings() const {
+base::Outcome<Session::Settings> AppSettings::sessionSettings() const {
     Session::Settings s;
     s.addressing = addressing;
     s.targetAddress = targetAddress;
@@ -113,14 +113,14 @@ protocol::Outcome<Session::Settings> AppSettings::sessionSettings() const {
         break;
     case Kind::Serial:
         if (serialPort.trimmed().isEmpty())
-            return protocol::failure(AppSettingsTr::tr("choose a serial port"));
+            return base::failure(AppSettingsTr::tr("choose a serial port"));
         s.line.kind = link::LineSettings::Kind::Serial;
         s.line.serial.portName = serialPort.trimmed();
         break;
     case Kind::Tcp:
         if (!link::TcpTransport::parseHostPort(tcpAddress.trimmed(), &s.line.tcpHost,
                                                &s.line.tcpPort))
-            return protocol::failure(
+            return base::failure(
                 AppSettingsTr::tr("'%1' is not HOST:PORT (for example 192.168.1.20:4001)")
                     .arg(tcpAddress));
         s.line.kind = link::LineSettings::Kind::Tcp;

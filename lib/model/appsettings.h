@@ -6,7 +6,7 @@
 
 #include "session.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QByteArray>
 #include <QString>
@@ -42,7 +42,7 @@ struct AppSettings {
     // part is all at full rate.
     [[nodiscard]] TelemetryTiers telemetryTiers() const;
     // The session settings these describe, or why they cannot be used.
-    [[nodiscard]] protocol::Outcome<Session::Settings> sessionSettings() const;
+    [[nodiscard]] base::Outcome<Session::Settings> sessionSettings() const;
 };
 
 } // namespace tipscope::model

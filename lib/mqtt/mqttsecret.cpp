@@ -1,6 +1,6 @@
 #include "mqttsecret.h"
 
-#include "protocol/elide.h"
+#include "base/elide.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -26,10 +26,10 @@ QByteArray withoutLineEnd(QByteArray value) {
 
 } // namespace
 
-protocol::Outcome<QByteArray> readSecretFile(const QString &path) {
-    using protocol::failure;
+base::Outcome<QByteArray> readSecretFile(const QString &path) {
+    using base::failure;
     const QFileInfo info(path);
-    const QString shown = protocol::elidedPath(path); // named by a file: quoted cut
+    const QString shown = base::elidedPath(path); // named by a file: quoted cut
     if (!info.exists())
         return failure(MqttSecretTr::tr("The password file %1 does not exist.").arg(shown));
     if (info.size() > kMaxSecretBytes)
@@ -47,13 +47,13 @@ protocol::Outcome<QByteArray> readSecretFile(const QString &path) {
     return line;
 }
 
-protocol::Outcome<QByteArray> readSecretEnvironment(const QString &name) {
+base::Outcome<QByteArray> readSecretEnvironment(const QString &name) {
     const QByteArray value = withoutLineEnd(qgetenv(name.toLocal8Bit().constData()));
     if (value.isEmpty())
-        return protocol::failure(
+        return base::failure(
             MqttSecretTr::tr("The environment variable %1 that should hold the password is not set "
                              "or empty.")
-                .arg(protocol::elided(name)));
+                .arg(base::elided(name)));
     return value;
 }
 

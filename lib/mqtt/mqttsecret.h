@@ -4,7 +4,7 @@
 // the file or the variable, never the value, in the user's language.
 #pragma once
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QByteArray>
 #include <QString>
@@ -13,9 +13,9 @@ namespace tipscope::mqtt {
 
 // The first line of the file at `path`. Refuses a missing, unreadable, empty or oversized
 // (over 4 KiB) file.
-[[nodiscard]] protocol::Outcome<QByteArray> readSecretFile(const QString &path);
+[[nodiscard]] base::Outcome<QByteArray> readSecretFile(const QString &path);
 
 // The value of the environment variable `name`. Refuses an unset or empty variable.
-[[nodiscard]] protocol::Outcome<QByteArray> readSecretEnvironment(const QString &name);
+[[nodiscard]] base::Outcome<QByteArray> readSecretEnvironment(const QString &name);
 
 } // namespace tipscope::mqtt

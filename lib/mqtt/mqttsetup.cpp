@@ -11,8 +11,8 @@
 
 namespace tipscope::mqtt {
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "mqttsettings.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QString>
 #include <memory>
@@ -20,13 +20,13 @@ struct MosquittoDeleter {
 using MosquittoHandle = std::unique_ptr<mosquitto, MosquittoDeleter>;
 
 // The client, or why a setting is refused. `userData` is what callbacks receive.
-[[nodiscard]] protocol::Outcome<MosquittoHandle> createMosquitto(const MqttSettings &settings,
-                                                                 void *userData);
+[[nodiscard]] base::Outcome<MosquittoHandle> createMosquitto(const MqttSettings &settings,
+                                                             void *userData);
 
 // Empty (success) without TLS; otherwise whether the TLS files can be used: the CA file readable
 // and PEM, a client certificate with its key, each readable. Checked at every connection, and by
 // `tipscope-agent --check`, so that a bad file is found before the service runs.
-[[nodiscard]] protocol::Outcome<void> checkTlsFiles(const MqttTls &tls);
+[[nodiscard]] base::Outcome<void> checkTlsFiles(const MqttTls &tls);
 
 // The client id to use: `settings.clientId`, or a new random one when it is empty.
 [[nodiscard]] QString effectiveClientId(const MqttSettings &settings);

@@ -1,6 +1,6 @@
 #include "agentconfig.h"
 
-#include "model/io/jsonfile.h"
+#include "base/jsonfile.h"
 #include "mqtt/mqttsecret.h"
 
 #include <QCoreApplication>
@@ -15,8 +15,8 @@ struct AgentConfigTr {
     Q_DECLARE_TR_FUNCTIONS(AgentConfig)
 };
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 const QString kFormat = QStringLiteral("tipscope-agent");
 constexpr qint64 kMaxBytes = 1024 * 1024;
@@ -262,9 +262,9 @@ Outcome<AgentConfig> AgentConfig::fromJson(const QJsonObject &json, const QStrin
 }
 
 Outcome<AgentConfig> AgentConfig::load(const QString &path) {
-    const auto read = model::io::readJsonObject(path, kMaxBytes);
-    if (const auto *problem = std::get_if<model::io::JsonFileProblem>(&read)) {
-        using Kind = model::io::JsonFileProblem::Kind;
+    const auto read = base::io::readJsonObject(path, kMaxBytes);
+    if (const auto *problem = std::get_if<base::io::JsonFileProblem>(&read)) {
+        using Kind = base::io::JsonFileProblem::Kind;
         switch (problem->kind) {
         case Kind::Missing:
             return failure(

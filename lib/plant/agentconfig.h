@@ -18,7 +18,7 @@
 #include "model/workspace/workspacefile.h"
 #include "mqtt/mqttsettings.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <optional>
 
@@ -51,9 +51,9 @@ struct AgentConfig {
     std::optional<cfx::CfxSettings> cfx; // none: no CFX
     QString cfxPasswordSource;
 
-    [[nodiscard]] static protocol::Outcome<AgentConfig> fromJson(const QJsonObject &json,
-                                                                 const QString &folder);
-    [[nodiscard]] static protocol::Outcome<AgentConfig> load(const QString &path);
+    [[nodiscard]] static base::Outcome<AgentConfig> fromJson(const QJsonObject &json,
+                                                             const QString &folder);
+    [[nodiscard]] static base::Outcome<AgentConfig> load(const QString &path);
 };
 
 } // namespace tipscope::plant

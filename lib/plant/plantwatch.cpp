@@ -5,7 +5,7 @@
 
 #include "mqtt/mqtttopic.h"
 
-#include "protocol/elide.h"
+#include "base/elide.h"
 
 #include <QDateTime>
 #include <QJsonDocument>
@@ -63,7 +63,7 @@ void PlantWatch::refuse(const QString &publisher, const QString &why) {
         return;
     }
     m_said.insert(who);
-    qCWarning(lcWatch, "%s refused: %s", qPrintable(protocol::elided(who, 160)), qPrintable(why));
+    qCWarning(lcWatch, "%s refused: %s", qPrintable(base::elided(who, 160)), qPrintable(why));
 }
 
 // Empty when a device at `where` may be added, else why not (and who is told).

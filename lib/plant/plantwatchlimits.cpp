@@ -1,6 +1,6 @@
 #include "plantwatchlimits.h"
 
-#include "protocol/elide.h"
+#include "base/elide.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -59,7 +59,7 @@ QString watchedMessageProblem(const QString &leaf, const QByteArray &payload, QJ
     // Measured before it is parsed: a 6 MB message costs its reading, not its parsing.
     if (const qsizetype bound = sizeBound(leaf); payload.size() > bound)
         return QStringLiteral("%1: %2 bytes (at most %3)")
-            .arg(protocol::elided(leaf))
+            .arg(base::elided(leaf))
             .arg(payload.size())
             .arg(bound);
     if (leaf.startsWith(QLatin1String("port/"))) {
@@ -67,7 +67,7 @@ QString watchedMessageProblem(const QString &leaf, const QByteArray &payload, QJ
         const int port = leaf.section(QLatin1Char('/'), 1, 1).toInt(&ok);
         if (!ok || port < 1 || port > L::kMaxPorts)
             return QStringLiteral("%1: ports are numbered 1 to %2")
-                .arg(protocol::elided(leaf))
+                .arg(base::elided(leaf))
                 .arg(L::kMaxPorts);
     }
     *json = QJsonDocument::fromJson(payload).object();
@@ -81,12 +81,12 @@ QString watchedMessageProblem(const QString &leaf, const QByteArray &payload, QJ
         for (const QJsonValue &sample : samples.isEmpty() ? QJsonArray{*json} : samples)
             if (sample.toObject().size() > L::kMaxSampleMembers)
                 return QStringLiteral("%1: a sample of %2 values (at most %3)")
-                    .arg(protocol::elided(leaf))
+                    .arg(base::elided(leaf))
                     .arg(sample.toObject().size())
                     .arg(L::kMaxSampleMembers);
     }
     if (const QString why = valueProblem(*json, 0, L::kMaxItems); !why.isEmpty())
-        return protocol::elided(leaf) + QStringLiteral(": ") + why;
+        return base::elided(leaf) + QStringLiteral(": ") + why;
     return {};
 }
 

@@ -10,9 +10,9 @@
 // what it is for and where it is shown, so no model or page needs to spell its code.
 #pragma once
 
+#include "base/outcome.h"
 #include "catalogroles.h"
 #include "catalogtext.h"
-#include "outcome.h"
 
 #include <QByteArray>
 #include <QList>
@@ -118,8 +118,8 @@ struct ResolvedCommand {
 class Catalog {
 public:
     // Parses the two JSON documents; on error says why.
-    [[nodiscard]] static Outcome<Catalog> load(const QByteArray &familiesJson,
-                                               const QByteArray &commandsJson);
+    [[nodiscard]] static base::Outcome<Catalog> load(const QByteArray &familiesJson,
+                                                     const QByteArray &commandsJson);
     // The catalog embedded in the library. Aborts if the embedded data is broken, which a unit
     // test rules out.
     [[nodiscard]] static const Catalog &builtin();

@@ -277,27 +277,28 @@ bool CatalogLoader::loadCommands(const QJsonObject &root) {
     return true;
 }
 
-static Outcome<QJsonObject> parseObject(const QByteArray &json, const char *what) {
+static base::Outcome<QJsonObject> parseObject(const QByteArray &json, const char *what) {
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
     if (pe.error != QJsonParseError::NoError || !doc.isObject())
-        return failure(QStringLiteral("%1: %2 at offset %3")
-                           .arg(QLatin1String(what), pe.errorString())
-                           .arg(pe.offset));
+        return base::failure(QStringLiteral("%1: %2 at offset %3")
+                                 .arg(QLatin1String(what), pe.errorString())
+                                 .arg(pe.offset));
     return doc.object();
 }
 
-Outcome<Catalog> Catalog::load(const QByteArray &familiesJson, const QByteArray &commandsJson) {
+base::Outcome<Catalog> Catalog::load(const QByteArray &familiesJson,
+                                     const QByteArray &commandsJson) {
     const auto fams = parseObject(familiesJson, "families.json");
     if (!fams)
-        return failure(fams.error());
+        return base::failure(fams.error());
     const auto cmds = parseObject(commandsJson, "commands.json");
     if (!cmds)
-        return failure(cmds.error());
+        return base::failure(cmds.error());
     Catalog c;
     CatalogLoader loader(c);
     if (!loader.loadFamilies(*fams) || !loader.loadCommands(*cmds))
-        return failure(loader.error);
+        return base::failure(loader.error);
     return c;
 }
 

@@ -36,11 +36,11 @@ static bool isPrintable(char c) {
     return c >= 0x20 && c <= 0x7e;
 }
 
-static Failure<DecodeFailure> fail(DecodeEvent::Kind kind, const QString &why) {
-    return failure(DecodeFailure{kind, why});
+static base::Failure<DecodeFailure> fail(DecodeEvent::Kind kind, const QString &why) {
+    return base::failure(DecodeFailure{kind, why});
 }
 
-Outcome<Frame, DecodeFailure> parseFrame(const QByteArray &raw) {
+base::Outcome<Frame, DecodeFailure> parseFrame(const QByteArray &raw) {
     using K = DecodeEvent::Kind;
     const qsizetype n = raw.size();
     if (n < 7 || raw.at(0) != kStx || raw.at(n - 2) != kEtx)

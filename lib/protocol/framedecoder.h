@@ -8,8 +8,8 @@
 // Each rejected candidate and each run of garbage is counted and logged (tipscope.protocol).
 #pragma once
 
+#include "base/outcome.h"
 #include "frame.h"
-#include "outcome.h"
 
 #include <QByteArrayView>
 #include <vector>
@@ -33,7 +33,7 @@ struct DecodeFailure {
 };
 
 // Parses the bytes of one complete candidate (STX ... ETX BCC), or says why it is not a frame.
-[[nodiscard]] Outcome<Frame, DecodeFailure> parseFrame(const QByteArray &raw);
+[[nodiscard]] base::Outcome<Frame, DecodeFailure> parseFrame(const QByteArray &raw);
 
 class FrameDecoder {
 public:

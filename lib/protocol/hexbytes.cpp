@@ -23,8 +23,8 @@ static int hexValue(QChar c) {
     return -1;
 }
 
-Outcome<QByteArray> parseHexBytes(const QString &text) {
-    const auto fail = [](const QString &why) { return failure(why); };
+base::Outcome<QByteArray> parseHexBytes(const QString &text) {
+    const auto fail = [](const QString &why) { return base::failure(why); };
     QByteArray out;
     int pending = -1;
     for (qsizetype i = 0; i < text.size(); ++i) {

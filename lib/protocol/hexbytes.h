@@ -3,7 +3,7 @@
 // message that points at the first bad character.
 #pragma once
 
-#include "outcome.h"
+#include "base/outcome.h"
 
 #include <QByteArray>
 #include <QString>
@@ -12,7 +12,7 @@ namespace tipscope::protocol {
 
 inline constexpr int kMaxHexInputBytes = 4096;
 
-[[nodiscard]] Outcome<QByteArray> parseHexBytes(const QString &text);
+[[nodiscard]] base::Outcome<QByteArray> parseHexBytes(const QString &text);
 // "02 30 30 ..." with a space between bytes.
 [[nodiscard]] QString toHexText(const QByteArray &bytes);
 // Printable ASCII as is, control bytes by name: "<STX>0001RSMN<ETX><3E>".

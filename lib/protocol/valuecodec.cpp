@@ -1,7 +1,7 @@
 #include "valuecodec.h"
 
+#include "base/elide.h"
 #include "datafield.h"
-#include "elide.h"
 
 #include <QCoreApplication>
 #include <cmath>
@@ -106,13 +106,13 @@ QString validateData(const ResolvedCommand &cmd, const QByteArray &data) {
     if (const auto v = decodeAnswer(cmd, data))
         return validate(cmd, v->number);
     return ValueCodecTr::tr("'%1' is no data field of %2 (%3): allowed is %4")
-        .arg(elided(QString::fromLatin1(data)), QString::fromLatin1(cmd.code),
+        .arg(base::elided(QString::fromLatin1(data)), QString::fromLatin1(cmd.code),
              catalogText(cmd.spec->name), allowedText(cmd));
 }
 
-Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value) {
+base::Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value) {
     if (const QString why = validate(cmd, value); !why.isEmpty())
-        return failure(why);
+        return base::failure(why);
     const CommandSpec &s = *cmd.spec;
     if (s.kind == ValueKind::Action)
         return s.fixedData;
@@ -120,7 +120,7 @@ Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value) {
     // Only a catalog range wider than the data field lets a valid value fail here.
     if (const auto field = delay ? encodeDelay(int(value)) : encodeNumber(value))
         return *field;
-    return failure(refused(cmd, value));
+    return base::failure(refused(cmd, value));
 }
 
 std::optional<Value> decodeAnswer(const ResolvedCommand &cmd, const QByteArray &data) {
@@ -175,7 +175,7 @@ std::optional<qint64> labelled(const QMap<int, QString> &labels, const QString &
     return std::nullopt;
 }
 
-Outcome<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text) {
+base::Outcome<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text) {
     const CommandSpec &s = *cmd.spec;
     const QString t = text.trimmed();
     if (s.kind == ValueKind::Action)
@@ -189,14 +189,15 @@ Outcome<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text) 
             return *n;
         if (auto d = parseDelayText(t))
             return *d;
-        return failure(
-            ValueCodecTr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(elided(t)));
+        return base::failure(ValueCodecTr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60")
+                                 .arg(base::elided(t)));
     }
     bool ok = false;
     const qint64 v = t.toLongLong(&ok);
     if (!ok)
-        return failure(ValueCodecTr::tr("'%1' is not a whole number; %2 takes %3")
-                           .arg(elided(t), QString::fromLatin1(cmd.code), allowedText(cmd)));
+        return base::failure(
+            ValueCodecTr::tr("'%1' is not a whole number; %2 takes %3")
+                .arg(base::elided(t), QString::fromLatin1(cmd.code), allowedText(cmd)));
     return v;
 }
 

@@ -8,8 +8,8 @@
 // models and the simulator all call it, so a value refused in one place is refused everywhere.
 #pragma once
 
+#include "base/outcome.h"
 #include "catalog.h"
-#include "outcome.h"
 
 #include <QString>
 #include <optional>
@@ -35,12 +35,12 @@ struct Value {
 // not checked: their field is the caller's to make.
 [[nodiscard]] QString validateData(const ResolvedCommand &cmd, const QByteArray &data);
 // The data field for a write of `value` (validated first), or validate()'s reason if refused.
-[[nodiscard]] Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value);
+[[nodiscard]] base::Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value);
 // Decodes the data field of an answer to a read.
 [[nodiscard]] std::optional<Value> decodeAnswer(const ResolvedCommand &cmd, const QByteArray &data);
 // Parses a value typed by a person: "-50", "350", "1.6" or "01.60" for delays, "disabled",
 // an enum label ("Stand", or as the user interface language says it). Numbers are in wire units.
-[[nodiscard]] Outcome<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text);
+[[nodiscard]] base::Outcome<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text);
 // The value whose label in `labels` is `text`, in the catalog's English (what scripts type) or
 // in the user interface language (what messages offer), whatever the case.
 [[nodiscard]] std::optional<qint64> labelled(const QMap<int, QString> &labels, const QString &text);

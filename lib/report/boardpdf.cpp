@@ -1,11 +1,11 @@
 #include "boardpdf.h"
 
+#include "base/atomicsave.h"
+#include "base/timetext.h"
 #include "journal/boardexport.h"
 #include "journal/jointexport.h"
-#include "model/io/atomicsave.h"
 #include "model/joints/jointtable.h"
 #include "model/joints/tipwear.h"
-#include "model/timetext.h"
 
 #include <QBuffer>
 #include <QCoreApplication>
@@ -174,8 +174,8 @@ QString header(const BoardRecord &record) {
     const QString none = QStringLiteral("—");
     const QStringList lines{
         BoardPdfTr::tr("Made: %1 to %2")
-            .arg(model::isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(record.firstMs)),
-                 model::isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(record.lastMs))),
+            .arg(base::isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(record.firstMs)),
+                 base::isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(record.lastMs))),
         BoardPdfTr::tr("Work order: %1")
             .arg(record.workOrders.isEmpty() ? none
                                              : esc(record.workOrders.join(QStringLiteral(", ")))),
@@ -241,7 +241,7 @@ QString worstSection(const BoardRecord &record) {
 }
 
 QString wearText(const BoardTip &tip) {
-    const auto seconds = [](qint64 ms) { return model::secondsText(ms); };
+    const auto seconds = [](qint64 ms) { return base::secondsText(ms); };
     if (!tip.baselineMs)
         return BoardPdfTr::tr("not yet known: %1 joints of this tip; its first %2 recovered "
                               "ones are the baseline")
@@ -341,10 +341,10 @@ QString boardHtml(const BoardRecord &record, const BoardReportInfo &info) {
            QStringLiteral("</body></html>");
 }
 
-protocol::Outcome<void> writeBoardPdf(const BoardRecord &record, const BoardReportInfo &info,
-                                      const QString &path) {
+base::Outcome<void> writeBoardPdf(const BoardRecord &record, const BoardReportInfo &info,
+                                  const QString &path) {
     if (!qobject_cast<QGuiApplication *>(QCoreApplication::instance()))
-        return protocol::failure(
+        return base::failure(
             BoardPdfTr::tr("cannot write %1: a PDF needs fonts, which need a graphical "
                            "application (QGuiApplication)")
                 .arg(path));
@@ -365,7 +365,7 @@ protocol::Outcome<void> writeBoardPdf(const BoardRecord &record, const BoardRepo
                              (96.0 / 72.0));
         document.print(&writer);
     }
-    return model::io::saveAtomically(path, pdf.data());
+    return base::io::saveAtomically(path, pdf.data());
 }
 
 } // namespace tipscope::report

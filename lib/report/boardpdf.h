@@ -16,8 +16,8 @@
 // refuses to run without one (a command-line program makes one on the offscreen platform).
 #pragma once
 
+#include "base/outcome.h"
 #include "journal/boardrecord.h"
-#include "protocol/outcome.h"
 
 #include <QString>
 
@@ -32,7 +32,7 @@ struct BoardReportInfo {
 // The record as rich text (the subset QTextDocument reads), in the user interface language.
 [[nodiscard]] QString boardHtml(const journal::BoardRecord &record, const BoardReportInfo &info);
 // Writes the PDF at `path`, whole or not at all.
-[[nodiscard]] protocol::Outcome<void>
-writeBoardPdf(const journal::BoardRecord &record, const BoardReportInfo &info, const QString &path);
+[[nodiscard]] base::Outcome<void> writeBoardPdf(const journal::BoardRecord &record,
+                                                const BoardReportInfo &info, const QString &path);
 
 } // namespace tipscope::report

@@ -16,7 +16,7 @@ LineService::~LineService() {
     m_workspace.close();
 }
 
-protocol::Outcome<void> LineService::start(const Options &options) {
+base::Outcome<void> LineService::start(const Options &options) {
     m_options = options;
     m_journal = std::make_unique<journal::Journal>(options.journalPath);
     if (options.followWorkContext)
@@ -25,12 +25,12 @@ protocol::Outcome<void> LineService::start(const Options &options) {
     return reloadLimits();
 }
 
-protocol::Outcome<void> LineService::reloadLimits() {
+base::Outcome<void> LineService::reloadLimits() {
     const QString path =
         m_options.limitsPath.isEmpty() ? model::defaultJointLimitsPath() : m_options.limitsPath;
     auto rules = model::loadJointLimits(path);
     if (!rules)
-        return protocol::failure(rules.error());
+        return base::failure(rules.error());
     m_limits = rules.value();
     for (const model::JointLimitRule &rule : std::as_const(m_options.extraRules))
         m_limits.add(rule);

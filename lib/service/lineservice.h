@@ -46,14 +46,14 @@ public:
     // Opens the journal and reads the limits. A limits file that cannot be read is refused,
     // before anything is judged by limits nobody set; the journal opens either way (a journal
     // that cannot be written says so in its own state, and holds its records until it can).
-    [[nodiscard]] protocol::Outcome<void> start(const Options &options);
+    [[nodiscard]] base::Outcome<void> start(const Options &options);
     // Closes the lines open and opens those of `file`.
     void openLines(const model::WorkspaceFile &file);
     void closeLines();
     void keep(model::Session &session);
     void release(model::Session &session);
     // Reads the limits file again (the window saved new limits), for every line and kept session.
-    [[nodiscard]] protocol::Outcome<void> reloadLimits();
+    [[nodiscard]] base::Outcome<void> reloadLimits();
     // Ends every joint in progress (as incomplete: it was not seen to its end) and waits up to
     // `ms` for the journal; false when a record could not be kept (the journal says why).
     [[nodiscard]] bool finish(int ms);

@@ -24,7 +24,7 @@ const QByteArray kHead = "# TipScope chart data, format 1\n"
 const QByteArray kRows = "2026-01-01T00:00:00.000Z,350,350,\n"
                          "2026-01-01T00:00:00.100Z,351,350,\n";
 
-tipscope::protocol::Outcome<std::unique_ptr<ChartRecording>> readBytes(const QByteArray &bytes) {
+tipscope::base::Outcome<std::unique_ptr<ChartRecording>> readBytes(const QByteArray &bytes) {
     QByteArray copy = bytes;
     QBuffer buffer(&copy);
     buffer.open(QIODevice::ReadOnly);

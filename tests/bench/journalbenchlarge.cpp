@@ -98,7 +98,7 @@ QString stationKey(int q) {
 }
 
 // The size of a query's answer; -1, with the reason in `error`, when it failed.
-template <typename T> qsizetype sizeOf(const protocol::Outcome<QList<T>> &list, QString &error) {
+template <typename T> qsizetype sizeOf(const base::Outcome<QList<T>> &list, QString &error) {
     if (!list)
         error = list.error();
     return list ? list->size() : -1;

@@ -36,7 +36,7 @@ qint64 jointsOnBoard(journal::JournalReader &reader, const QString &path, const 
     journal::JointFilter filter;
     filter.boardSerial = serial;
     const auto count =
-        reader.keepOpen(path) ? reader.countJoints(filter) : protocol::Outcome<qint64>(qint64(0));
+        reader.keepOpen(path) ? reader.countJoints(filter) : base::Outcome<qint64>(qint64(0));
     return count ? *count : 0;
 }
 
@@ -306,7 +306,7 @@ private Q_SLOTS:
             const auto events =
                 reader.keepOpen(agent.journalPath())
                     ? reader.events(port4)
-                    : protocol::Outcome<QList<journal::StoredEvent>>(QList<journal::StoredEvent>());
+                    : base::Outcome<QList<journal::StoredEvent>>(QList<journal::StoredEvent>());
             return events && !events->isEmpty();
         };
         QTRY_VERIFY2_WITH_TIMEOUT(port4Changed(), qPrintable(agent.log()), 60000);

@@ -33,8 +33,8 @@ struct Folder {
     QTemporaryDir dir;
 };
 
-bool sameOutcome(const tipscope::protocol::Outcome<AgentConfig> &a,
-                 const tipscope::protocol::Outcome<AgentConfig> &b) {
+bool sameOutcome(const tipscope::base::Outcome<AgentConfig> &a,
+                 const tipscope::base::Outcome<AgentConfig> &b) {
     if (a.ok() != b.ok())
         return false;
     if (!a.ok())

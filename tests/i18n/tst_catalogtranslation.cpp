@@ -4,12 +4,12 @@
 // the one embedded by the build, so a text lupdate did not collect (scripts/gen-catalog-strings not
 // run) or a label shown without catalogText() stays English here and fails.
 #include "../model/simfixture.h"
+#include "base/timetext.h"
 #include "i18n/translations.h"
 #include "model/context/deviceidentity.h"
 #include "model/events/eventhistorymodel.h"
 #include "model/events/eventtext.h"
 #include "model/report/supportreport.h"
-#include "model/timetext.h"
 #include "testmain.h"
 
 #include <QJsonArray>
@@ -162,7 +162,8 @@ void TestCatalogTranslation::aRepeatedEventSaysHowOftenInGermanInTheTableAndTheR
     e.time = QDateTime::currentDateTime().addSecs(-60);
     e.lastTime = e.time.addSecs(30);
     QCOMPARE(EventHistoryModel::text(e, EventHistoryModel::Text, false),
-             QStringLiteral("nicht gesendet (75-mal, bis %1)").arg(clockText(e.lastTime)));
+             QStringLiteral("nicht gesendet (75-mal, bis %1)")
+                 .arg(tipscope::base::clockText(e.lastTime)));
     const QJsonObject event{{QStringLiteral("text"), text},
                             {QStringLiteral("count"), 75},
                             {QStringLiteral("lastTime"), QStringLiteral("10:02:13")}};

@@ -152,12 +152,12 @@ SampleBoard writeSampleBoard(const QString &path) {
     return sample;
 }
 
-protocol::Outcome<journal::BoardRecord> writeAndReadSampleBoard(const QString &path) {
+base::Outcome<journal::BoardRecord> writeAndReadSampleBoard(const QString &path) {
     if (!writeSampleBoard(path).written)
-        return protocol::failure(QStringLiteral("the sample board was not written"));
+        return base::failure(QStringLiteral("the sample board was not written"));
     journal::JournalReader reader;
     if (const auto opened = reader.open(path); !opened)
-        return protocol::failure(opened.error());
+        return base::failure(opened.error());
     return journal::buildBoardRecord(reader, QStringLiteral("SN-42"));
 }
 

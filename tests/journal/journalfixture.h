@@ -44,7 +44,7 @@ struct SampleBoard {
 };
 [[nodiscard]] SampleBoard writeSampleBoard(const QString &path);
 // writeSampleBoard() at `path`, and the record of SN-42 read back from it; the reason when not.
-[[nodiscard]] protocol::Outcome<journal::BoardRecord> writeAndReadSampleBoard(const QString &path);
+[[nodiscard]] base::Outcome<journal::BoardRecord> writeAndReadSampleBoard(const QString &path);
 
 // Options for tests: nothing pruned (retention 0), retries every 50 ms.
 [[nodiscard]] journal::JournalOptions quickOptions();

@@ -2,9 +2,9 @@
 // through the CSV reader every export shares to the JSON's values, and a work order, board or
 // operator typed with a comma, a quote, spaces at its ends or a line break stays one cell of one
 // line; a joint that never recovered has an empty recovery and a null one in JSON.
+#include "base/csv.h"
 #include "journal/jointexport.h"
 #include "journalfixture.h"
-#include "model/io/csv.h"
 #include "testmain.h"
 
 #include <QJsonObject>
@@ -25,8 +25,8 @@ journal::StoredJoint storedJoint(const model::WorkContext &context) {
 
 QStringList cellsOf(const QString &line) {
     const QByteArray bytes = line.toUtf8();
-    model::csv::Cells cells;
-    if (!model::csv::splitLine(bytes, cells))
+    base::csv::Cells cells;
+    if (!base::csv::splitLine(bytes, cells))
         return {};
     QStringList texts;
     for (qsizetype i = 0; i < cells.size(); ++i)

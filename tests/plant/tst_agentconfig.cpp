@@ -28,7 +28,7 @@ class TestAgentConfig : public QObject {
 
     QString path(const QString &name) const { return m_dir.filePath(name); }
 
-    tipscope::protocol::Outcome<AgentConfig> load(const QByteArray &json) {
+    tipscope::base::Outcome<AgentConfig> load(const QByteArray &json) {
         write(path(QStringLiteral("agent.json")), json);
         return AgentConfig::load(path(QStringLiteral("agent.json")));
     }

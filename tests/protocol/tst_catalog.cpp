@@ -115,7 +115,7 @@ std::optional<QString> adviceFor(const Catalog &cat, const QString &family, int 
 
 // A catalog with one family X, whose station errors (read with SER) are the table "errors" and
 // whose advice tables are `advice`.
-Outcome<Catalog> catalogWithAdvice(const QByteArray &advice) {
+tipscope::base::Outcome<Catalog> catalogWithAdvice(const QByteArray &advice) {
     const QByteArray fams =
         R"({"families":{"X":{"kind":"station","stationErrors":"errors"}},"units":{"none":{}},)"
         R"("tables":{"errors":{"0":"OK","1":"one","2":"two","3":"three"},"advice":)" +

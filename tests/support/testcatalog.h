@@ -22,7 +22,7 @@ inline QByteArray builtinCatalogFile(const char *name) {
 }
 
 // The built-in catalog plus `entries` (objects as in commands.json), or why it does not load.
-inline protocol::Outcome<protocol::Catalog> catalogWith(const QList<QJsonObject> &entries) {
+inline base::Outcome<protocol::Catalog> catalogWith(const QList<QJsonObject> &entries) {
     QJsonObject commands = QJsonDocument::fromJson(builtinCatalogFile("commands.json")).object();
     QJsonArray list = commands.value(QLatin1String("commands")).toArray();
     for (const QJsonObject &e : entries)

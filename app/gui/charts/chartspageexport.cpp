@@ -3,8 +3,8 @@
 // file where a good one was.
 #include "chartspage.h"
 
+#include "base/atomicsave.h"
 #include "chartwidget.h"
-#include "model/io/atomicsave.h"
 #include "model/recording/chartcsv.h"
 
 #include <QBuffer>
@@ -109,14 +109,14 @@ QString ChartsPage::exportPng(const QString &path, QSize size) {
     QBuffer buffer(&png);
     if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG"))
         return tr("the image could not be encoded");
-    const auto saved = io::saveAtomically(path, png);
+    const auto saved = base::io::saveAtomically(path, png);
     return saved.ok() ? QString() : saved.error();
 }
 
 QString ChartsPage::exportCsv(const QString &path) {
     if (!m_replay) // the header names today's tools and alarm limits
         m_liveChannels = sessionChannels(m_session);
-    const auto saved = io::saveAtomically(path, [this](QIODevice &file) {
+    const auto saved = base::io::saveAtomically(path, [this](QIODevice &file) {
         ChartCsvWriter writer(file, shownChannels(), m_session.temperatureUnit());
         return writer.writeHeader(softwareVersion()) &&
                writer.writeWindow(shownTelemetry(), events(), m_viewport.start(), m_viewport.end());

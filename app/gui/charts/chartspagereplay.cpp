@@ -4,9 +4,9 @@
 // leaves a replay for the live charts at a given moment (a joint picked on the Joints page).
 #include "chartspage.h"
 
+#include "base/timetext.h"
 #include "model/recording/chartcsvreader.h"
 #include "model/recording/recordingloader.h"
-#include "model/timetext.h"
 
 #include "widgets/startfolder.h"
 
@@ -116,7 +116,7 @@ QString ChartsPage::showMoment(const DeviceIdentity &device, qint64 fromMs, qint
         });
     if (!covered)
         return tr("The charts hold no readings of %1 at %2: only this session's readings are kept.")
-            .arg(device.description(), clockText(QDateTime::fromMSecsSinceEpoch(fromMs)));
+            .arg(device.description(), base::clockText(QDateTime::fromMSecsSinceEpoch(fromMs)));
     // Enough either side to see the tip before the joint and its recovery after it.
     constexpr qint64 kAroundMs = 10'000;
     m_viewport.showRange(fromMs - kAroundMs, toMs + kAroundMs);

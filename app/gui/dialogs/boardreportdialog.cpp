@@ -62,12 +62,11 @@ void BoardReportDialog::writeReport(const QString &path) {
     if (m_reader)
         return;
     // What the thread builds, handed back on this one once it ended.
-    auto record =
-        std::make_shared<protocol::Outcome<journal::BoardRecord>>(protocol::failure(QString()));
+    auto record = std::make_shared<base::Outcome<journal::BoardRecord>>(base::failure(QString()));
     m_reader = QThread::create([record, journalPath = m_journalPath, serial] {
         journal::JournalReader reader;
         if (const auto opened = reader.open(journalPath); !opened)
-            *record = protocol::failure(opened.error());
+            *record = base::failure(opened.error());
         else
             *record = journal::buildBoardRecord(reader, serial);
     });
@@ -84,7 +83,7 @@ void BoardReportDialog::writeReport(const QString &path) {
     m_reader->start();
 }
 
-void BoardReportDialog::finishReport(const protocol::Outcome<journal::BoardRecord> &record,
+void BoardReportDialog::finishReport(const base::Outcome<journal::BoardRecord> &record,
                                      const QString &serial, const QString &path) {
     m_write->setEnabled(true);
     m_serial->setEnabled(true);

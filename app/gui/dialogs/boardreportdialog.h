@@ -39,7 +39,7 @@ Q_SIGNALS:
     void reportDone(const QString &problem);
 
 private:
-    void finishReport(const protocol::Outcome<journal::BoardRecord> &record, const QString &serial,
+    void finishReport(const base::Outcome<journal::BoardRecord> &record, const QString &serial,
                       const QString &path);
     void showProblem(const QString &problem);
     void fitHeight();

@@ -132,7 +132,7 @@ void JointLimitsDialog::addRule(const JointLimitRule &rule) {
     check();
 }
 
-protocol::Outcome<JointLimitRules> JointLimitsDialog::limits() const {
+base::Outcome<JointLimitRules> JointLimitsDialog::limits() const {
     JointLimits defaults;
     defaults.maxRecoveryMs = qRound64(m_recovery->value() * 1000);
     defaults.maxDipK = m_dip->value();
@@ -156,7 +156,7 @@ protocol::Outcome<JointLimitRules> JointLimitsDialog::limits() const {
         }
         const auto rule = JointLimitRules::parseRule(parts.join(QLatin1Char(',')));
         if (!rule)
-            return protocol::failure(tr("Rule %1: %2").arg(row + 1).arg(rule.error()));
+            return base::failure(tr("Rule %1: %2").arg(row + 1).arg(rule.error()));
         rules.add(rule.value());
     }
     return rules;

@@ -24,7 +24,7 @@ public:
                       QWidget *parent = nullptr);
 
     // The limits as the dialog holds them, or the first thing wrong with them.
-    [[nodiscard]] protocol::Outcome<model::JointLimitRules> limits() const;
+    [[nodiscard]] base::Outcome<model::JointLimitRules> limits() const;
     void accept() override;
     void addRule(const model::JointLimitRule &rule);
 

@@ -342,7 +342,7 @@ void ConsolePage::setPaused(bool paused) {
     updateCount();
 }
 
-protocol::Outcome<void> ConsolePage::saveTo(const QString &path) {
+base::Outcome<void> ConsolePage::saveTo(const QString &path) {
     m_model->flush(); // the file has every row up to now
     return m_model->saveText(path);
 }

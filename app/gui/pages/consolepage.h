@@ -64,7 +64,7 @@ public:
     void setActive(bool active) override;
 
     // Writes every row (not only the filtered ones) as tab-separated text.
-    [[nodiscard]] protocol::Outcome<void> saveTo(const QString &path);
+    [[nodiscard]] base::Outcome<void> saveTo(const QString &path);
     [[nodiscard]] model::ConsoleModel &consoleModel() { return *m_model; }
     [[nodiscard]] QAbstractItemModel *visibleRows() { return m_proxy; }
 

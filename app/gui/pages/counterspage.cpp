@@ -1,8 +1,8 @@
 #include "counterspage.h"
 
+#include "base/atomicsave.h"
+#include "base/csv.h"
 #include "model/device/displayunits.h"
-#include "model/io/atomicsave.h"
-#include "model/io/csv.h"
 #include "widgets/deferredrefresh.h"
 
 #include "widgets/startfolder.h"
@@ -50,8 +50,9 @@ QString csvLine(const QString &device, int port, const Parameter &p) {
     const auto wire = p.number();
     const QString value =
         wire ? QString::number(toDisplay(p.spec(), *wire, unit), 'f', f.decimals) : QString();
-    const QStringList fields{csv::quoted(device), port > 0 ? QString::number(port) : QString(),
-                             csv::quoted(p.meta().name), value, csv::quoted(f.unit)};
+    const QStringList fields{base::csv::quoted(device),
+                             port > 0 ? QString::number(port) : QString(),
+                             base::csv::quoted(p.meta().name), value, base::csv::quoted(f.unit)};
     return fields.join(QLatin1Char(',')) + QLatin1Char('\n');
 }
 
@@ -394,7 +395,7 @@ void CountersPage::chooseExportFile() {
                              tr("The counters could not be saved: %1").arg(saved.error()));
 }
 
-protocol::Outcome<void> CountersPage::exportCsv(const QString &path) const {
+base::Outcome<void> CountersPage::exportCsv(const QString &path) const {
     // The header is a file format that scripts match on, so it is not translated.
     QString text = QStringLiteral("device,port,counter,value,unit\n");
     for (DeviceModel *device : m_session.devices()) {
@@ -409,7 +410,7 @@ protocol::Outcome<void> CountersPage::exportCsv(const QString &path) const {
                 text += csvLine(feeder->displayName(), 0, *p);
         }
     }
-    return io::saveAtomically(path, text.toUtf8());
+    return base::io::saveAtomically(path, text.toUtf8());
 }
 
 } // namespace tipscope::gui

@@ -20,7 +20,7 @@
 
 #include "page.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QDateTime>
 #include <functional>
@@ -52,7 +52,7 @@ public:
     // Every counter of every device as CSV (UTF-8, header row "device,port,counter,value,unit",
     // values in display units with a '.' decimal point); fails, saying why, when the file cannot
     // be written.
-    [[nodiscard]] protocol::Outcome<void> exportCsv(const QString &path) const;
+    [[nodiscard]] base::Outcome<void> exportCsv(const QString &path) const;
 
 private:
     struct ResetButton {

@@ -34,7 +34,7 @@ void ErrorsPage::copySelection() const {
     m_history->copySelection();
 }
 
-protocol::Outcome<void> ErrorsPage::exportText(const QString &path) const {
+base::Outcome<void> ErrorsPage::exportText(const QString &path) const {
     return m_history->exportText(path);
 }
 

@@ -5,7 +5,7 @@
 
 #include "page.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 namespace tipscope::gui {
 
@@ -26,7 +26,7 @@ public:
     void copySelection() const;
     // Writes the history rows that pass the filters, with a header line, tab-separated, UTF-8;
     // fails, saying why, when the file cannot be written.
-    [[nodiscard]] protocol::Outcome<void> exportText(const QString &path) const;
+    [[nodiscard]] base::Outcome<void> exportText(const QString &path) const;
 
 private:
     ErrorStatePanel *m_state;

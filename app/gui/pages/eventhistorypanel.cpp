@@ -2,7 +2,7 @@
 
 #include "levelstyle.h"
 
-#include "model/io/atomicsave.h"
+#include "base/atomicsave.h"
 
 #include "widgets/startfolder.h"
 
@@ -326,14 +326,14 @@ void EventHistoryPanel::copySelection() const {
     QApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
 }
 
-protocol::Outcome<void> EventHistoryPanel::exportText(const QString &path) const {
+base::Outcome<void> EventHistoryPanel::exportText(const QString &path) const {
     QStringList header;
     for (int c = 0; c < EventHistoryModel::ColumnCount; ++c)
         header.append(EventHistoryModel::columnName(c));
     QString text = header.join(QLatin1Char('\t')) + QLatin1Char('\n');
     for (int row = m_filter->rowCount() - 1; row >= 0; --row) // in time order, as logs are read
         text += rowText(row) + QLatin1Char('\n');
-    return model::io::saveAtomically(path, text.toUtf8());
+    return base::io::saveAtomically(path, text.toUtf8());
 }
 
 void EventHistoryPanel::chooseExportFile() {

@@ -8,9 +8,9 @@
 // model::EventHistoryModel, which any front end can use.
 #pragma once
 
+#include "base/outcome.h"
 #include "model/events/eventhistorymodel.h"
 #include "model/session.h"
-#include "protocol/outcome.h"
 
 #include <QGroupBox>
 #include <QHash>
@@ -35,7 +35,7 @@ public:
     void copySelection() const;
     // Writes the rows that pass the filters, with a header line, tab-separated, UTF-8; fails,
     // saying why, when the file cannot be written.
-    [[nodiscard]] protocol::Outcome<void> exportText(const QString &path) const;
+    [[nodiscard]] base::Outcome<void> exportText(const QString &path) const;
 
 private:
     [[nodiscard]] QLayout *buildFilters();

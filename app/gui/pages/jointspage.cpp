@@ -6,9 +6,9 @@
 #include "widgets/deferredrefresh.h"
 #include "widgets/flowlayout.h"
 
+#include "base/atomicsave.h"
 #include "journal/journal.h"
 #include "journal/journalreader.h"
-#include "model/io/atomicsave.h"
 
 #include "widgets/startfolder.h"
 
@@ -56,14 +56,13 @@ struct JournalJoints {
 };
 
 // The joints and devices the journal holds, or why it could not be read.
-protocol::Outcome<JournalJoints> readJournal(const QString &path,
-                                             const journal::JointFilter &filter) {
+base::Outcome<JournalJoints> readJournal(const QString &path, const journal::JointFilter &filter) {
     journal::JournalReader reader;
     if (const auto opened = reader.open(path); !opened)
-        return protocol::failure(opened.error());
+        return base::failure(opened.error());
     const auto stored = reader.joints(filter);
     if (!stored)
-        return protocol::failure(stored.error());
+        return base::failure(stored.error());
     JournalJoints out;
     for (const journal::StoredJoint &s : *stored)
         out.rows.append({s.record, s.context.workOrder});
@@ -353,7 +352,7 @@ void JointsPage::showStatus(const QString &text, bool problem) {
 }
 
 QString JointsPage::exportCsv(const QString &path) {
-    const auto saved = io::saveAtomically(path, m_table.csv());
+    const auto saved = base::io::saveAtomically(path, m_table.csv());
     if (!saved) {
         m_otherProblem = true;
         showStatus(saved.error(), true);

@@ -361,14 +361,13 @@ void SettingsPage::saveProfile() {
         QMessageBox::critical(this, tr("Save profile"), done.error());
 }
 
-protocol::Outcome<QString> SettingsPage::saveProfileTo(const QString &path,
-                                                       const QString &comment) {
+base::Outcome<QString> SettingsPage::saveProfileTo(const QString &path, const QString &comment) {
     if (!m_device)
-        return protocol::failure(tr("no device is selected"));
+        return base::failure(tr("no device is selected"));
     Profile p = Profile::capture(*m_device);
     p.comment = comment.trimmed();
     if (const auto saved = p.save(path); !saved.ok())
-        return protocol::failure(saved.error());
+        return base::failure(saved.error());
     m_saved = tr("✓ Profile saved: %n setting(s) of %1 in %2", nullptr, int(p.values.size()))
                   .arg(m_device->displayName(), QDir::toNativeSeparators(path));
     m_editsAtSave = editedCount();

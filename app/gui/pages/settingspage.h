@@ -12,7 +12,7 @@
 
 #include "page.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 class QComboBox;
 class QLabel;
@@ -44,7 +44,7 @@ public:
     [[nodiscard]] int editedCount() const;
     // Saves the device's settings as a profile with `comment`; the confirmation shown (where it
     // went, how many settings), or why it was not saved.
-    protocol::Outcome<QString> saveProfileTo(const QString &path, const QString &comment);
+    base::Outcome<QString> saveProfileTo(const QString &path, const QString &comment);
     // What the page says under its buttons (why some are off, the last profile saved).
     [[nodiscard]] QString noticeText() const;
     // The buttons, for tests: "apply", "revert", "refresh", "save", "actions", "profiles".

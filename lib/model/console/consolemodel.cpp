@@ -2,7 +2,7 @@
 
 #include "model/session.h"
 
-#include "model/io/atomicsave.h"
+#include "base/atomicsave.h"
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
 #include "protocol/hexbytes.h"
@@ -346,14 +346,14 @@ QString ConsoleModel::lineText(int row) const {
     return cells.join(QLatin1Char('\t'));
 }
 
-protocol::Outcome<void> ConsoleModel::saveText(const QString &path) const {
+base::Outcome<void> ConsoleModel::saveText(const QString &path) const {
     QStringList header;
     for (int c = 0; c < ColumnCount; ++c)
         header.append(headerData(c, Qt::Horizontal, Qt::DisplayRole).toString());
     QByteArray text = header.join(QLatin1Char('\t')).toUtf8() + '\n';
     for (int r = 0; r < rowCount(); ++r)
         text += lineText(r).toUtf8() + '\n';
-    return io::saveAtomically(path, text);
+    return base::io::saveAtomically(path, text);
 }
 
 bool ConsoleModel::filterAccepts(int row, const Filter &filter) const {

@@ -15,8 +15,8 @@
 
 #include "consolesender.h"
 
+#include "base/outcome.h"
 #include "link/frametap.h"
-#include "protocol/outcome.h"
 
 #include <QAbstractTableModel>
 #include <QMap>
@@ -104,7 +104,7 @@ public:
     // One line per entry, as shown; for "save to file".
     [[nodiscard]] QString lineText(int row) const;
     // Every entry, with a header line, tab-separated; saved atomically.
-    [[nodiscard]] protocol::Outcome<void> saveText(const QString &path) const;
+    [[nodiscard]] base::Outcome<void> saveText(const QString &path) const;
 
     struct Filter {
         bool tx = true, rx = true, decoded = true, errors = true, notes = true;

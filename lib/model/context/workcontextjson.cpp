@@ -1,6 +1,6 @@
 #include "model/context/workcontextjson.h"
 
-#include "protocol/elide.h"
+#include "base/elide.h"
 
 #include <QCoreApplication>
 #include <utility>
@@ -25,7 +25,7 @@ QString fieldProblem(const QString &key, const QString &text) {
         const QChar c = text.at(i);
         if (c.category() == QChar::Other_Control || c.category() == QChar::Other_Format)
             return WorkContextJsonTr::tr("%1 holds a control character (%2) at character %3")
-                .arg(key, protocol::elided(QString(c)))
+                .arg(key, base::elided(QString(c)))
                 .arg(i + 1);
     }
     return {};
@@ -47,15 +47,15 @@ QJsonObject workContextToJson(const WorkContext &context) {
             {kOperator, context.operatorName}};
 }
 
-protocol::Outcome<WorkContext> workContextFromJson(const QJsonObject &json) {
+base::Outcome<WorkContext> workContextFromJson(const QJsonObject &json) {
     for (const QString &key : {kWorkOrder, kSerial, kOperator})
         if (json.contains(key) && !json.value(key).isString())
-            return protocol::failure(WorkContextJsonTr::tr("%1 must be text").arg(key));
+            return base::failure(WorkContextJsonTr::tr("%1 must be text").arg(key));
     const WorkContext context{json.value(kWorkOrder).toString().trimmed(),
                               json.value(kSerial).toString().trimmed(),
                               json.value(kOperator).toString().trimmed()};
     if (const QString why = workContextProblem(context); !why.isEmpty())
-        return protocol::failure(why);
+        return base::failure(why);
     return context;
 }
 

@@ -9,7 +9,7 @@
 
 #include "model/context/workcontext.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QJsonObject>
 
@@ -21,6 +21,6 @@ inline constexpr int kMaxWorkContextChars = 64;
 [[nodiscard]] QString workContextProblem(const WorkContext &context);
 
 [[nodiscard]] QJsonObject workContextToJson(const WorkContext &context);
-[[nodiscard]] protocol::Outcome<WorkContext> workContextFromJson(const QJsonObject &json);
+[[nodiscard]] base::Outcome<WorkContext> workContextFromJson(const QJsonObject &json);
 
 } // namespace tipscope::model

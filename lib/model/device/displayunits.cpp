@@ -61,8 +61,8 @@ QString formatValue(const ResolvedCommand &cmd, const Value &v, TemperatureUnit 
     }
 }
 
-Outcome<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text, TemperatureUnit t,
-                                 const QLocale &locale) {
+base::Outcome<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text,
+                                       TemperatureUnit t, const QLocale &locale) {
     const QString s = text.trimmed();
     if (auto special = labelled(cmd.spec->special, s))
         return *special;
@@ -78,21 +78,21 @@ Outcome<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text
     if (!ok)
         d = number.trimmed().toDouble(&ok); // a script may use the C locale's decimal point
     if (!ok || !std::isfinite(d))
-        return failure(DisplayUnitsTr::tr("'%1' is not a number").arg(s));
+        return base::failure(DisplayUnitsTr::tr("'%1' is not a number").arg(s));
     // Far beyond any wire value (which the catalog's limits then refuse by name): rounding it
     // would overflow.
     const double exact = (d - f.offset) / f.scale;
     if (std::fabs(exact) > 1e15)
-        return failure(DisplayUnitsTr::tr("'%1' is far outside what %2 can take")
-                           .arg(s, catalogText(cmd.spec->name)));
+        return base::failure(DisplayUnitsTr::tr("'%1' is far outside what %2 can take")
+                                 .arg(s, catalogText(cmd.spec->name)));
     const qint64 wire = fromDisplay(cmd, d, t);
     if (std::fabs(toDisplay(cmd, wire, t) - d) > 1e-9 * qMax(1.0, std::fabs(d))) {
         // Nothing is written that was not typed; the two values the station can hold around it
         // are named, as a whole °F is rarely a whole °C.
         const auto below = qint64(std::floor(exact));
-        return failure(DisplayUnitsTr::tr("%1 lies between the values %2 can take: %3 or %4")
-                           .arg(s, catalogText(cmd.spec->name), formatNumber(cmd, below, t),
-                                formatNumber(cmd, below + 1, t)));
+        return base::failure(DisplayUnitsTr::tr("%1 lies between the values %2 can take: %3 or %4")
+                                 .arg(s, catalogText(cmd.spec->name), formatNumber(cmd, below, t),
+                                      formatNumber(cmd, below + 1, t)));
     }
     return wire;
 }

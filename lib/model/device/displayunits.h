@@ -41,8 +41,8 @@ struct DisplayFormat {
 // value's or an enum's name. Numbers are read in `locale`, and also with the C locale's point (a
 // script's); a value the wire cannot hold exactly (finer than its step) is refused, not rounded:
 // nothing is written that was not typed. tipscope-cli passes QLocale::c().
-[[nodiscard]] protocol::Outcome<qint64> parseDisplayText(const protocol::ResolvedCommand &cmd,
-                                                         const QString &text, TemperatureUnit t,
-                                                         const QLocale &locale = QLocale());
+[[nodiscard]] base::Outcome<qint64> parseDisplayText(const protocol::ResolvedCommand &cmd,
+                                                     const QString &text, TemperatureUnit t,
+                                                     const QLocale &locale = QLocale());
 
 } // namespace tipscope::model

@@ -233,7 +233,7 @@ quint64 Parameter::apply() {
                                 ? ParameterTr::tr("monitor-only mode is on: nothing is written")
                                 : validate(*m_edit);
     const auto data = blocked.isEmpty() ? encodeWrite(*m_write, *m_edit)
-                                        : Outcome<QByteArray>(protocol::failure(blocked));
+                                        : base::Outcome<QByteArray>(base::failure(blocked));
     if (!data) {
         const QString why = data.error();
         // The caller learns the id from this call: tell the outcome once it can listen.

@@ -1,7 +1,7 @@
 #include "eventhistorymodel.h"
 
+#include "base/timetext.h"
 #include "eventtext.h"
-#include "model/timetext.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -61,7 +61,7 @@ QString EventHistoryModel::text(const Event &e, int column, bool full) {
     switch (column) {
     case Time:
         return full ? e.time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
-                    : clockText(e.time);
+                    : base::clockText(e.time);
     case Severity:
         return levelName(levelOf(e.severity));
     case Kind:
@@ -72,7 +72,7 @@ QString EventHistoryModel::text(const Event &e, int column, bool full) {
         return repeatedEventText(
             e.text, e.count,
             full ? e.lastTime.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
-                 : clockText(e.lastTime));
+                 : base::clockText(e.lastTime));
     default:
         return {};
     }

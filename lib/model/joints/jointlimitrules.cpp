@@ -1,6 +1,6 @@
 #include "model/joints/jointlimitrules.h"
 
-#include "protocol/elide.h"
+#include "base/elide.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -14,8 +14,8 @@ struct JointLimitRulesTr {
     Q_DECLARE_TR_FUNCTIONS(JointLimitRules)
 };
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 const QString kPort = QStringLiteral("port");
 const QString kTool = QStringLiteral("tool");
@@ -204,14 +204,14 @@ Outcome<JointLimitRule> JointLimitRules::parseRule(const QString &text) {
             return failure(JointLimitRulesTr::tr(
                                "“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, "
                                "dip=KELVIN or wear=SHARE, joined by commas")
-                               .arg(protocol::elided(part.trimmed())));
+                               .arg(base::elided(part.trimmed())));
         }
     }
     if (!rule.maxRecoveryMs && !rule.maxDipK && !rule.wearShare)
         return failure(
             JointLimitRulesTr::tr("“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or "
                                   "wear=SHARE")
-                .arg(protocol::elided(text)));
+                .arg(base::elided(text)));
     return rule;
 }
 

@@ -13,7 +13,7 @@
 
 #include "model/joints/jointdetector.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QJsonObject>
 #include <QList>
@@ -47,10 +47,10 @@ public:
     [[nodiscard]] JointLimits limitsFor(int port, const QString &tool) const;
 
     [[nodiscard]] QJsonObject toJson() const;
-    [[nodiscard]] static protocol::Outcome<JointLimitRules> fromJson(const QJsonObject &json);
+    [[nodiscard]] static base::Outcome<JointLimitRules> fromJson(const QJsonObject &json);
     // "port=1,tool=C245,recovery=3.5,dip=60,wear=0.3" (recovery in seconds; any part may be left
     // out, but one limit must be given).
-    [[nodiscard]] static protocol::Outcome<JointLimitRule> parseRule(const QString &text);
+    [[nodiscard]] static base::Outcome<JointLimitRule> parseRule(const QString &text);
     // The rule in parseRule()'s words, for listings.
     [[nodiscard]] static QString ruleText(const JointLimitRule &rule);
 

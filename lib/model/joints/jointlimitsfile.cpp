@@ -1,7 +1,7 @@
 #include "model/joints/jointlimitsfile.h"
 
-#include "model/io/atomicsave.h"
-#include "model/io/jsonfile.h"
+#include "base/atomicsave.h"
+#include "base/jsonfile.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -24,34 +24,35 @@ QString defaultJointLimitsPath() {
     return QDir(config).filePath(QStringLiteral("TipScope/joint-limits.json"));
 }
 
-protocol::Outcome<JointLimitRules> loadJointLimits(const QString &path) {
-    const auto read = io::readJsonObject(path, kMaxBytes);
-    if (const auto *problem = std::get_if<io::JsonFileProblem>(&read)) {
-        using Kind = io::JsonFileProblem::Kind;
+base::Outcome<JointLimitRules> loadJointLimits(const QString &path) {
+    const auto read = base::io::readJsonObject(path, kMaxBytes);
+    if (const auto *problem = std::get_if<base::io::JsonFileProblem>(&read)) {
+        using Kind = base::io::JsonFileProblem::Kind;
         switch (problem->kind) {
         case Kind::Missing:
             return JointLimitRules{};
         case Kind::Unreadable:
-            return protocol::failure(JointLimitsFileTr::tr("cannot read the joint limits %1: %2")
-                                         .arg(path, problem->detail));
+            return base::failure(JointLimitsFileTr::tr("cannot read the joint limits %1: %2")
+                                     .arg(path, problem->detail));
         case Kind::TooBig:
-            return protocol::failure(
+            return base::failure(
                 JointLimitsFileTr::tr("the joint limits %1 are too big").arg(path));
         case Kind::NotAnObject:
-            return protocol::failure(
+            return base::failure(
                 JointLimitsFileTr::tr("the joint limits %1 are not a JSON object: %2")
                     .arg(path, problem->detail));
         }
     }
     const auto rules = JointLimitRules::fromJson(std::get<QJsonObject>(read));
     if (!rules)
-        return protocol::failure(QStringLiteral("%1: %2").arg(path, rules.error()));
+        return base::failure(QStringLiteral("%1: %2").arg(path, rules.error()));
     return rules;
 }
 
-protocol::Outcome<void> saveJointLimits(const QString &path, const JointLimitRules &rules) {
+base::Outcome<void> saveJointLimits(const QString &path, const JointLimitRules &rules) {
     QDir().mkpath(QFileInfo(path).absolutePath());
-    return io::saveAtomically(path, QJsonDocument(rules.toJson()).toJson(QJsonDocument::Indented));
+    return base::io::saveAtomically(path,
+                                    QJsonDocument(rules.toJson()).toJson(QJsonDocument::Indented));
 }
 
 } // namespace tipscope::model

@@ -8,8 +8,8 @@
 namespace tipscope::model {
 
 [[nodiscard]] QString defaultJointLimitsPath();
-[[nodiscard]] protocol::Outcome<JointLimitRules> loadJointLimits(const QString &path);
-[[nodiscard]] protocol::Outcome<void> saveJointLimits(const QString &path,
-                                                      const JointLimitRules &rules);
+[[nodiscard]] base::Outcome<JointLimitRules> loadJointLimits(const QString &path);
+[[nodiscard]] base::Outcome<void> saveJointLimits(const QString &path,
+                                                  const JointLimitRules &rules);
 
 } // namespace tipscope::model

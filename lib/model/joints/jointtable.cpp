@@ -1,7 +1,7 @@
 #include "jointtable.h"
 
-#include "model/io/csv.h"
-#include "model/timetext.h"
+#include "base/csv.h"
+#include "base/timetext.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -178,7 +178,7 @@ QString JointTableModel::text(const JointRow &row, int column, TemperatureUnit u
     const QLocale locale;
     switch (column) {
     case Time:
-        return clockText(QDateTime::fromMSecsSinceEpoch(j.startMs));
+        return base::clockText(QDateTime::fromMSecsSinceEpoch(j.startMs));
     case Device:
         return deviceText(j.device);
     case Port:
@@ -298,10 +298,10 @@ QByteArray JointTableModel::csv() const {
     for (const JointRow &r : m_rows) {
         const JointRecord &j = r.joint;
         const QStringList cells = {
-            isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(j.startMs)),
-            csv::quoted(j.device.key()),
+            base::isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(j.startMs)),
+            base::csv::quoted(j.device.key()),
             QString::number(j.port),
-            csv::quoted(j.tool),
+            base::csv::quoted(j.tool),
             QString::number(shown(j.setpoint, m_unit)),
             QString::number(shownTenths(j.lowestTip, m_unit), 'f', 1),
             QString::number(shownDifference(j.dipDepth, m_unit), 'f', 1),
@@ -312,7 +312,7 @@ QByteArray JointTableModel::csv() const {
             QString::number(j.powerPeak),
             csvNumber(j.powerIntegral, 2),
             jointVerdictName(j.verdict),
-            csv::quoted(r.workOrder)};
+            base::csv::quoted(r.workOrder)};
         out += cells.join(QLatin1Char(',')).toUtf8() + '\n';
     }
     return out;

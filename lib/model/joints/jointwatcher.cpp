@@ -2,7 +2,7 @@
 
 #include "model/device/displayunits.h"
 
-#include "model/timetext.h"
+#include "base/timetext.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -117,11 +117,11 @@ QString JointWatcher::warningText(const JointRecord &joint, const JointLimits &l
             .arg(QLocale().toString(joint.dipDepth, 'f', 1))
             .arg(limits.maxDipK);
     case JointVerdict::SlowRecovery:
-        return joint.recoveryMs
-                   ? JointWatcherTr::tr("joint recovered slowly: %1 s (limit %2 s)")
-                         .arg(secondsText(*joint.recoveryMs), secondsText(limits.maxRecoveryMs))
-                   : JointWatcherTr::tr("joint did not recover within %1 s")
-                         .arg(secondsText(joint.durationMs));
+        return joint.recoveryMs ? JointWatcherTr::tr("joint recovered slowly: %1 s (limit %2 s)")
+                                      .arg(base::secondsText(*joint.recoveryMs),
+                                           base::secondsText(limits.maxRecoveryMs))
+                                : JointWatcherTr::tr("joint did not recover within %1 s")
+                                      .arg(base::secondsText(joint.durationMs));
     case JointVerdict::Ok:
     case JointVerdict::Incomplete:
         break;

@@ -1,6 +1,6 @@
 #include "model/joints/tipwear.h"
 
-#include "model/timetext.h"
+#include "base/timetext.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -71,9 +71,9 @@ QString TipWear::noticeText(const Notice &notice) {
                "tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when "
                "it was plugged in")
         .arg(notice.tool.isEmpty() ? TipWearTr::tr("the tool") : notice.tool,
-             secondsText(notice.recentMs))
+             base::secondsText(notice.recentMs))
         .arg(kWindow)
-        .arg(secondsText(notice.baselineMs));
+        .arg(base::secondsText(notice.baselineMs));
 }
 
 } // namespace tipscope::model

@@ -3,8 +3,8 @@
 #include "model/device/devicemodel.h"
 #include "profilejson.h"
 
-#include "model/io/atomicsave.h"
-#include "protocol/elide.h"
+#include "base/atomicsave.h"
+#include "base/elide.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -106,7 +106,7 @@ QStringList Profile::problemsFor(const QString &fam) const {
     QStringList problems;
     const Catalog &cat = Catalog::builtin();
     for (const auto &[code, data] : values) {
-        const QString c = elided(QString::fromLatin1(code));
+        const QString c = base::elided(QString::fromLatin1(code));
         const auto w = cat.resolve(fam, code, Direction::Write);
         const auto r = cat.resolve(fam, code, Direction::Read);
         if (!w || !r || w->spec->kind == ValueKind::Flags || w->spec->kind == ValueKind::Action) {
@@ -116,7 +116,7 @@ QStringList Profile::problemsFor(const QString &fam) const {
         const auto v = decodeAnswer(*r, data);
         if (!v || v->isText) {
             problems.append(ProfileTr::tr("%1: '%2' is not a valid data field")
-                                .arg(c, elided(QString::fromLatin1(data))));
+                                .arg(c, base::elided(QString::fromLatin1(data))));
             continue;
         }
         if (const QString why = validate(*w, v->number); !why.isEmpty())
@@ -131,8 +131,8 @@ QString Profile::sizeProblem(qint64 bytes) {
     return ProfileTr::tr("%1 bytes; a profile is at most %2").arg(bytes).arg(kMaxProfileBytes);
 }
 
-Outcome<Profile> Profile::fromJson(const QByteArray &json) {
-    const auto fail = [](const QString &why) { return failure(why); };
+base::Outcome<Profile> Profile::fromJson(const QByteArray &json) {
+    const auto fail = [](const QString &why) { return base::failure(why); };
     // Every way in (a file, a FIFO, a broker's message) meets the same bound.
     if (const QString why = sizeProblem(json.size()); !why.isEmpty())
         return fail(why);
@@ -148,7 +148,7 @@ Outcome<Profile> Profile::fromJson(const QByteArray &json) {
     if (const QStringList twice = profilejson::duplicateKeys(json); !twice.isEmpty()) {
         QStringList shown;
         for (const QString &key : twice)
-            shown.append(elided(key));
+            shown.append(base::elided(key));
         return fail(ProfileTr::tr("given more than once, so which value is meant is unclear: %1; "
                                   "nothing will be written")
                         .arg(shown.join(QLatin1String(", "))));
@@ -166,7 +166,7 @@ Outcome<Profile> Profile::fromJson(const QByteArray &json) {
     Profile p;
     p.family = root.value(QStringLiteral("family")).toString().toUpper();
     if (!Catalog::builtin().family(p.family))
-        return fail(ProfileTr::tr("unknown device family '%1'").arg(elided(p.family)));
+        return fail(ProfileTr::tr("unknown device family '%1'").arg(base::elided(p.family)));
     p.model = root.value(QStringLiteral("model")).toString();
     p.softwareVersion = root.value(QStringLiteral("softwareVersion")).toString();
     p.created =
@@ -182,13 +182,13 @@ Outcome<Profile> Profile::fromJson(const QByteArray &json) {
         if (!raw && schema < 2)
             return fail(
                 ProfileTr::tr("%1: the value must be a data field in quotes, e.g. \"00350\"")
-                    .arg(elided(it.key())));
+                    .arg(base::elided(it.key())));
         if (!raw)
             return fail(
                 ProfileTr::tr("%1: the value must be a data field in quotes, e.g. \"00350\", "
                               "or an object with one in \"raw\" (and text in \"name\" and "
                               "\"value\")")
-                    .arg(elided(it.key())));
+                    .arg(base::elided(it.key())));
         const QByteArray code = it.key().toUpper().toLatin1();
         p.values.append({code, *raw});
         if (!note.name.isEmpty() || !note.value.isEmpty())
@@ -201,23 +201,24 @@ Outcome<Profile> Profile::fromJson(const QByteArray &json) {
     return p;
 }
 
-Outcome<void> Profile::save(const QString &path) const {
-    return io::saveAtomically(path, toJson());
+base::Outcome<void> Profile::save(const QString &path) const {
+    return base::io::saveAtomically(path, toJson());
 }
 
-Outcome<Profile> Profile::load(const QString &path) {
+base::Outcome<Profile> Profile::load(const QString &path) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
-        return failure(ProfileTr::tr("cannot read %1: %2").arg(elidedPath(path), f.errorString()));
+        return base::failure(
+            ProfileTr::tr("cannot read %1: %2").arg(base::elidedPath(path), f.errorString()));
     // Read at most one byte more than allowed: size() is 0 for a FIFO or standard input.
     const QByteArray bytes = f.read(kMaxProfileBytes + 1);
     if (bytes.size() > kMaxProfileBytes)
-        return failure(
+        return base::failure(
             ProfileTr::tr("%1 is %2")
-                .arg(elidedPath(path), sizeProblem(qMax<qint64>(f.size(), bytes.size()))));
+                .arg(base::elidedPath(path), sizeProblem(qMax<qint64>(f.size(), bytes.size()))));
     auto p = fromJson(bytes);
     if (!p.ok())
-        return failure(ProfileTr::tr("%1: %2").arg(elidedPath(path), p.error()));
+        return base::failure(ProfileTr::tr("%1: %2").arg(base::elidedPath(path), p.error()));
     return p;
 }
 

@@ -12,7 +12,7 @@
 // profile writes nothing. Runtime state (port status) and actions are never part of a profile.
 #pragma once
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QDateTime>
 #include <QList>
@@ -53,9 +53,9 @@ struct Profile {
     // 1048576"): the one bound of files, standard input and remote requests.
     [[nodiscard]] static QString sizeProblem(qint64 bytes);
     // The reason a file is refused names the first problem; load() adds the file's name.
-    [[nodiscard]] static protocol::Outcome<Profile> fromJson(const QByteArray &json);
-    [[nodiscard]] protocol::Outcome<void> save(const QString &path) const; // atomic
-    [[nodiscard]] static protocol::Outcome<Profile> load(const QString &path);
+    [[nodiscard]] static base::Outcome<Profile> fromJson(const QByteArray &json);
+    [[nodiscard]] base::Outcome<void> save(const QString &path) const; // atomic
+    [[nodiscard]] static base::Outcome<Profile> load(const QString &path);
     // Entries that are not valid for `family` (empty when all are), as "CODE: why" lines.
     [[nodiscard]] QStringList problemsFor(const QString &family) const;
 };

@@ -2,7 +2,7 @@
 
 #include "profilejson.h"
 
-#include "protocol/elide.h"
+#include "base/elide.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -45,7 +45,7 @@ QString requestIdProblem(const QJsonValue &id) {
 ProfileRequest ProfileRequest::parse(const QByteArray &payload) {
     ProfileRequest request;
     const auto refuse = [&request](const QString &why) {
-        request.profile = failure(why);
+        request.profile = base::failure(why);
         return request;
     };
     // Measured before anything is parsed: an oversized request costs no more than its reading.
@@ -64,7 +64,7 @@ ProfileRequest ProfileRequest::parse(const QByteArray &payload) {
     QByteArray profileText;
     for (const profilejson::Member &member : profilejson::topLevelMembers(payload)) {
         if (++seen[member.key] == 2)
-            twice.append(elided(member.key));
+            twice.append(base::elided(member.key));
         if (member.key == kProfileKey)
             profileText = member.value;
     }

@@ -20,7 +20,7 @@ struct ProfileRequest {
     // answer can carry it. Empty otherwise.
     QString requestId;
     // The profile, or why the request is refused (nothing of it is to be written).
-    protocol::Outcome<Profile> profile{protocol::failure(QStringLiteral("no request read"))};
+    base::Outcome<Profile> profile{base::failure(QStringLiteral("no request read"))};
 
     [[nodiscard]] static ProfileRequest parse(const QByteArray &payload);
 };

@@ -1,6 +1,6 @@
 #include "model/recording/chartcsv.h"
 
-#include "model/io/csv.h"
+#include "base/csv.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -196,7 +196,7 @@ void ChartCsvWriter::writeRow(qint64 timeMs, const QList<const QList<qint32> *> 
                 m_out << formatValue(cells.at(c)->at(s), m_formats.at(c).at(s));
         }
     }
-    m_out << ',' << csv::quoted(event) << '\n';
+    m_out << ',' << base::csv::quoted(event) << '\n';
     ++m_rows;
 }
 

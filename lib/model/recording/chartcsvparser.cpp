@@ -1,8 +1,8 @@
 #include "model/recording/chartcsvparser.h"
 
-#include "model/io/csv.h"
+#include "base/csv.h"
+#include "base/elide.h"
 #include "model/recording/chartcsv.h"
-#include "protocol/elide.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -164,7 +164,7 @@ bool ChartCsvParser::line(QByteArrayView bytes) {
     }
     if (bytes.trimmed().isEmpty())
         return true;
-    if (!csv::splitLine(bytes, m_cells))
+    if (!base::csv::splitLine(bytes, m_cells))
         return fail(ChartCsvParserTr::tr("a quoted cell is not closed"));
     return m_haveHeader ? row(m_cells) : header(m_cells);
 }
@@ -187,7 +187,7 @@ void ChartCsvParser::comment(const QString &text) {
     }
 }
 
-bool ChartCsvParser::header(const csv::Cells &cells) {
+bool ChartCsvParser::header(const base::csv::Cells &cells) {
     static const QRegularExpression name(
         QStringLiteral("^(port(\\d+)|feeder) (\\w+)(?: \\[(.+)\\])?$"));
     if (cells.at(0) != QByteArrayView(chartcsv::kTimeColumn))
@@ -212,7 +212,7 @@ bool ChartCsvParser::header(const csv::Cells &cells) {
                 ChartCsvParserTr::tr("column %1 \"%2\" is not \"port<n> <series> [unit]\" or "
                                      "\"feeder <series> [unit]\"")
                     .arg(i + 1)
-                    .arg(protocol::elided(cell)));
+                    .arg(base::elided(cell)));
         const QString id = m.captured(1);
         const QString series = m.captured(3);
         const QString unit = m.captured(4);
@@ -224,9 +224,9 @@ bool ChartCsvParser::header(const csv::Cells &cells) {
         if (unit != format.unit)
             return fail(ChartCsvParserTr::tr("column %1 \"%2\": the unit should be \"%3\"")
                             .arg(i + 1)
-                            .arg(protocol::elided(cell), format.unit.isEmpty()
-                                                             ? ChartCsvParserTr::tr("none")
-                                                             : format.unit));
+                            .arg(base::elided(cell), format.unit.isEmpty()
+                                                         ? ChartCsvParserTr::tr("none")
+                                                         : format.unit));
         qsizetype c = 0;
         while (c < channels.size() && channels.at(c).id != id)
             ++c;
@@ -235,7 +235,7 @@ bool ChartCsvParser::header(const csv::Cells &cells) {
         if (channels[c].series.contains(series))
             return fail(ChartCsvParserTr::tr("column %1 \"%2\" appears twice")
                             .arg(i + 1)
-                            .arg(protocol::elided(cell)));
+                            .arg(base::elided(cell)));
         channels[c].series.append(series);
         m_channelColumns[c].append(int(m_columns.size()));
         m_columns.append(Column{int(c), format});
@@ -271,7 +271,7 @@ void ChartCsvParser::addChannel(const QString &id, int port) {
     m_channelColumns.append(QList<int>());
 }
 
-bool ChartCsvParser::channelValues(int channel, const csv::Cells &cells, QList<qint32> &out,
+bool ChartCsvParser::channelValues(int channel, const base::csv::Cells &cells, QList<qint32> &out,
                                    bool &present) {
     out.clear();
     int filled = 0;
@@ -286,7 +286,7 @@ bool ChartCsvParser::channelValues(int channel, const csv::Cells &cells, QList<q
         if (!wire)
             return fail(ChartCsvParserTr::tr("column %1: \"%2\" is not a number")
                             .arg(i + 2)
-                            .arg(protocol::elided(QString::fromUtf8(cell))));
+                            .arg(base::elided(QString::fromUtf8(cell))));
         out.append(*wire);
     }
     present = filled > 0;
@@ -296,7 +296,7 @@ bool ChartCsvParser::channelValues(int channel, const csv::Cells &cells, QList<q
     return true;
 }
 
-bool ChartCsvParser::row(const csv::Cells &cells) {
+bool ChartCsvParser::row(const base::csv::Cells &cells) {
     if (cells.size() != m_columns.size() + 1)
         return fail(ChartCsvParserTr::tr("%1 cells, but the header has %2 columns")
                         .arg(cells.size())
@@ -304,7 +304,7 @@ bool ChartCsvParser::row(const csv::Cells &cells) {
     const auto ms = timeOf(cells.at(0));
     if (!ms)
         return fail(ChartCsvParserTr::tr("\"%1\" is not an ISO 8601 time")
-                        .arg(protocol::elided(cells.text(0))));
+                        .arg(base::elided(cells.text(0))));
     ChartRecording &out = *m_data.recording;
     if (out.rows > 0 && *ms < out.lastMs)
         return fail(ChartCsvParserTr::tr(
@@ -334,7 +334,7 @@ bool ChartCsvParser::row(const csv::Cells &cells) {
     return true;
 }
 
-bool ChartCsvParser::events(qint64 ms, const csv::Cells &cells) {
+bool ChartCsvParser::events(qint64 ms, const base::csv::Cells &cells) {
     for (int i : std::as_const(m_eventColumns)) {
         if (cells.at(i + 1).isEmpty())
             continue;
@@ -344,7 +344,7 @@ bool ChartCsvParser::events(qint64 ms, const csv::Cells &cells) {
         const auto event = ChartEvent::fromCsvCell(ms, cell);
         if (!event)
             return fail(ChartCsvParserTr::tr("the event \"%1\" is not \"<channel> <kind>: <text>\"")
-                            .arg(protocol::elided(cell)));
+                            .arg(base::elided(cell)));
         m_data.recording->events.add(*event);
     }
     return true;

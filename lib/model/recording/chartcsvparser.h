@@ -12,7 +12,7 @@
 // another.
 #pragma once
 
-#include "model/io/csv.h"
+#include "base/csv.h"
 #include "model/recording/chartcsvreader.h"
 
 #include <QMap>
@@ -47,11 +47,12 @@ private:
 
     bool line(QByteArrayView bytes);
     void comment(const QString &text);
-    bool header(const csv::Cells &cells);
+    bool header(const base::csv::Cells &cells);
     void addChannel(const QString &id, int port);
-    bool row(const csv::Cells &cells);
-    bool channelValues(int channel, const csv::Cells &cells, QList<qint32> &out, bool &present);
-    bool events(qint64 ms, const csv::Cells &cells);
+    bool row(const base::csv::Cells &cells);
+    bool channelValues(int channel, const base::csv::Cells &cells, QList<qint32> &out,
+                       bool &present);
+    bool events(qint64 ms, const base::csv::Cells &cells);
     // A gap cell ("port1 gap: line-down") of a known channel: marks the gap, true.
     bool gap(qint64 ms, const QString &cell);
 
@@ -65,7 +66,7 @@ private:
     QList<Column> m_columns;
     QList<QList<int>> m_channelColumns; // per channel, its columns' indexes in m_columns
     QList<int> m_eventColumns;
-    csv::Cells m_cells; // reused for every row
+    base::csv::Cells m_cells; // reused for every row
     QList<qint32> m_values;
     ChartRecordingData m_data;
     bool m_haveHeader = false;

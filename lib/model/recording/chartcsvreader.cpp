@@ -16,8 +16,8 @@
 
 namespace tipscope::model {
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 namespace {
 struct ChartCsvReaderTr {

@@ -23,8 +23,8 @@
 #include "model/chart/chartevents.h"
 #include "model/chart/chartseries.h"
 
+#include "base/outcome.h"
 #include "model/telemetry/telemetry.h"
-#include "protocol/outcome.h"
 
 #include <functional>
 #include <memory>
@@ -84,13 +84,13 @@ public:
     static constexpr int kChunkBytes = 64 * 1024;
 
     // The recording, or why the file cannot be replayed ("recording.csv, line 12: ...").
-    [[nodiscard]] static protocol::Outcome<std::unique_ptr<ChartRecording>>
+    [[nodiscard]] static base::Outcome<std::unique_ptr<ChartRecording>>
     readFile(const QString &path, const Options &options = {});
     // The same from an open device; the reason has no file name.
-    [[nodiscard]] static protocol::Outcome<std::unique_ptr<ChartRecording>>
+    [[nodiscard]] static base::Outcome<std::unique_ptr<ChartRecording>>
     read(QIODevice &device, const Options &options = {});
     // readFile() but for assemble(), for a thread other than the one that shows the recording.
-    [[nodiscard]] static protocol::Outcome<ChartRecordingData>
+    [[nodiscard]] static base::Outcome<ChartRecordingData>
     readFileData(const QString &path, const Options &options = {});
     // The error of a read that Options::progress cancelled.
     [[nodiscard]] static QString cancelledText();

@@ -1,10 +1,10 @@
 // The support report as JSON, and written to files with its text beside it.
 #include "supportreport.h"
 
+#include "base/atomicsave.h"
+#include "base/timetext.h"
 #include "model/device/settingname.h"
-#include "model/io/atomicsave.h"
 #include "model/session.h"
-#include "model/timetext.h"
 
 #include <QDir>
 #include <QJsonArray>
@@ -49,7 +49,7 @@ QJsonObject deviceJson(const DeviceModel &d) {
                         {QStringLiteral("state"),
                          QString::fromLatin1(
                              QMetaEnum::fromType<Parameter::State>().valueToKey(int(p->state())))},
-                        {QStringLiteral("updated"), isoTimeWithOffset(p->lastUpdate())}});
+                        {QStringLiteral("updated"), base::isoTimeWithOffset(p->lastUpdate())}});
     }
     return {{QStringLiteral("address"), d.info().addressText()},
             {QStringLiteral("model"), d.info().model},
@@ -89,14 +89,14 @@ QJsonObject linePart(Session &session, int recentEvents) {
     const QList<Event> all = session.eventLog().events();
     for (qsizetype i = qMax<qsizetype>(0, all.size() - recentEvents); i < all.size(); ++i) {
         const Event &e = all.at(i);
-        QJsonObject event{{QStringLiteral("time"), isoTimeWithOffset(e.time)},
+        QJsonObject event{{QStringLiteral("time"), base::isoTimeWithOffset(e.time)},
                           {QStringLiteral("kind"), Event::kindName(e.kind)},
                           {QStringLiteral("severity"), Event::severityName(e.severity)},
                           {QStringLiteral("source"), e.source},
                           {QStringLiteral("text"), e.text},
                           {QStringLiteral("count"), e.count}};
         if (e.count > 1)
-            event.insert(QStringLiteral("lastTime"), isoTimeWithOffset(e.lastTime));
+            event.insert(QStringLiteral("lastTime"), base::isoTimeWithOffset(e.lastTime));
         events.append(event);
     }
     return {{QStringLiteral("line"), line},
@@ -106,11 +106,12 @@ QJsonObject linePart(Session &session, int recentEvents) {
 } // namespace
 
 QJsonObject supportReportJson(Session &session, int recentEvents) {
-    QJsonObject report{{QStringLiteral("format"), QStringLiteral("tipscope-support-report")},
-                       {QStringLiteral("created"), isoTimeWithOffset(QDateTime::currentDateTime())},
-                       {QStringLiteral("tipscopeVersion"), QStringLiteral(TIPSCOPE_VERSION)},
-                       {QStringLiteral("qtVersion"), QString::fromLatin1(qVersion())},
-                       {QStringLiteral("system"), QSysInfo::prettyProductName()}};
+    QJsonObject report{
+        {QStringLiteral("format"), QStringLiteral("tipscope-support-report")},
+        {QStringLiteral("created"), base::isoTimeWithOffset(QDateTime::currentDateTime())},
+        {QStringLiteral("tipscopeVersion"), QStringLiteral(TIPSCOPE_VERSION)},
+        {QStringLiteral("qtVersion"), QString::fromLatin1(qVersion())},
+        {QStringLiteral("system"), QSysInfo::prettyProductName()}};
     const QJsonObject part = linePart(session, recentEvents);
     for (auto it = part.begin(); it != part.end(); ++it)
         report.insert(it.key(), it.value());
@@ -136,8 +137,7 @@ QJsonObject supportReportJson(Session &session, const QList<ReportedLine> &works
     return report;
 }
 
-protocol::Outcome<QStringList> writeSupportReport(const QJsonObject &report,
-                                                  const QString &folder) {
+base::Outcome<QStringList> writeSupportReport(const QJsonObject &report, const QString &folder) {
     const QString stem = QDir(folder).filePath(
         QStringLiteral("tipscope-report-%1")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
@@ -146,8 +146,8 @@ protocol::Outcome<QStringList> writeSupportReport(const QJsonObject &report,
         {stem + QStringLiteral(".txt"), supportReportText(report).toUtf8()}};
     QStringList written;
     for (const auto &[path, bytes] : files) {
-        if (const auto saved = io::saveAtomically(path, bytes); !saved.ok())
-            return protocol::failure(saved.error());
+        if (const auto saved = base::io::saveAtomically(path, bytes); !saved.ok())
+            return base::failure(saved.error());
         written.append(path);
     }
     return written;

@@ -6,7 +6,7 @@
 // devices and events. Nothing is read from the devices for it: it shows what TipScope knew.
 #pragma once
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QJsonObject>
 #include <QList>
@@ -33,7 +33,7 @@ struct ReportedLine {
 [[nodiscard]] QString supportReportText(const QJsonObject &report);
 // Writes tipscope-report-<date>.json and .txt of `report` into `folder`; returns their paths,
 // or why not.
-[[nodiscard]] protocol::Outcome<QStringList> writeSupportReport(const QJsonObject &report,
-                                                                const QString &folder);
+[[nodiscard]] base::Outcome<QStringList> writeSupportReport(const QJsonObject &report,
+                                                            const QString &folder);
 
 } // namespace tipscope::model

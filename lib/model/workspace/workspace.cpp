@@ -23,12 +23,11 @@ void Workspace::open(const WorkspaceFile &file) {
         connectLine(i);
 }
 
-protocol::Outcome<void> Workspace::addLine(const WorkspaceLine &line) {
+base::Outcome<void> Workspace::addLine(const WorkspaceLine &line) {
     if (line.name.trimmed().isEmpty())
-        return protocol::failure(tr("a line needs a name"));
+        return base::failure(tr("a line needs a name"));
     if (indexOf(line.name) >= 0)
-        return protocol::failure(
-            tr("the workspace already has a line named \"%1\"").arg(line.name));
+        return base::failure(tr("the workspace already has a line named \"%1\"").arg(line.name));
     m_file.lines.append(line);
     const int index = count();
     startSession(index);

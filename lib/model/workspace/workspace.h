@@ -30,7 +30,7 @@ public:
 
     void open(const WorkspaceFile &file);
     // Adds a line to those open and connects it; the others carry on. Refuses a name in use.
-    protocol::Outcome<void> addLine(const WorkspaceLine &line);
+    base::Outcome<void> addLine(const WorkspaceLine &line);
     void close();
 
     [[nodiscard]] const WorkspaceFile &file() const { return m_file; }

@@ -1,8 +1,8 @@
 #include "model/workspace/workspacefile.h"
 
-#include "model/io/atomicsave.h"
-#include "model/io/jsonfile.h"
-#include "protocol/elide.h"
+#include "base/atomicsave.h"
+#include "base/elide.h"
+#include "base/jsonfile.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -19,8 +19,8 @@ struct WorkspaceFileTr {
     Q_DECLARE_TR_FUNCTIONS(WorkspaceFile)
 };
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 const QString kFormat = QStringLiteral("tipscope-workspace");
 constexpr qint64 kMaxBytes = 4 * 1024 * 1024;
@@ -71,9 +71,8 @@ Outcome<WorkspaceFile> WorkspaceFile::fromJson(const QJsonObject &json) {
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString name = list.at(i).toObject().value(QStringLiteral("name")).toString();
         const QString which =
-            name.isEmpty()
-                ? WorkspaceFileTr::tr("line %1").arg(i + 1)
-                : WorkspaceFileTr::tr("line %1 (%2)").arg(i + 1).arg(protocol::elided(name));
+            name.isEmpty() ? WorkspaceFileTr::tr("line %1").arg(i + 1)
+                           : WorkspaceFileTr::tr("line %1 (%2)").arg(i + 1).arg(base::elided(name));
         if (!list.at(i).isObject())
             return failure(WorkspaceFileTr::tr("%1: must be an object").arg(which));
         const auto line = workspaceLineFromJson(list.at(i).toObject());
@@ -90,11 +89,11 @@ Outcome<WorkspaceFile> WorkspaceFile::fromJson(const QJsonObject &json) {
 }
 
 Outcome<WorkspaceFile> WorkspaceFile::load(const QString &path) {
-    const auto read = io::readJsonObject(path, kMaxBytes);
+    const auto read = base::io::readJsonObject(path, kMaxBytes);
     // The path may come from another file (an agent's configuration): quoted cut, as any echo.
-    const QString shown = protocol::elidedPath(path);
-    if (const auto *problem = std::get_if<io::JsonFileProblem>(&read)) {
-        using Kind = io::JsonFileProblem::Kind;
+    const QString shown = base::elidedPath(path);
+    if (const auto *problem = std::get_if<base::io::JsonFileProblem>(&read)) {
+        using Kind = base::io::JsonFileProblem::Kind;
         switch (problem->kind) {
         case Kind::Missing:
             return failure(WorkspaceFileTr::tr("cannot read the workspace %1: %2")
@@ -125,7 +124,7 @@ Outcome<WorkspaceFile> WorkspaceFile::load(const QString &path) {
 
 Outcome<void> WorkspaceFile::save(const QString &path) const {
     QDir().mkpath(QFileInfo(path).absolutePath());
-    return io::saveAtomically(path, QJsonDocument(toJson()).toJson(QJsonDocument::Indented));
+    return base::io::saveAtomically(path, QJsonDocument(toJson()).toJson(QJsonDocument::Indented));
 }
 
 } // namespace tipscope::model

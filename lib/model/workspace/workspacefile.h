@@ -16,7 +16,7 @@
 #include "model/joints/jointlimitrules.h"
 #include "model/session.h"
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QJsonObject>
 #include <QList>
@@ -53,13 +53,13 @@ struct WorkspaceFile {
 
     [[nodiscard]] const WorkspaceLine *line(const QString &name) const;
     [[nodiscard]] QJsonObject toJson() const;
-    [[nodiscard]] static protocol::Outcome<WorkspaceFile> fromJson(const QJsonObject &json);
-    [[nodiscard]] static protocol::Outcome<WorkspaceFile> load(const QString &path);
-    [[nodiscard]] protocol::Outcome<void> save(const QString &path) const;
+    [[nodiscard]] static base::Outcome<WorkspaceFile> fromJson(const QJsonObject &json);
+    [[nodiscard]] static base::Outcome<WorkspaceFile> load(const QString &path);
+    [[nodiscard]] base::Outcome<void> save(const QString &path) const;
 };
 
 // One line of a workspace as JSON, and back (workspacelinejson.cpp). A failure names the field.
 [[nodiscard]] QJsonObject workspaceLineToJson(const WorkspaceLine &line);
-[[nodiscard]] protocol::Outcome<WorkspaceLine> workspaceLineFromJson(const QJsonObject &json);
+[[nodiscard]] base::Outcome<WorkspaceLine> workspaceLineFromJson(const QJsonObject &json);
 
 } // namespace tipscope::model

@@ -18,8 +18,8 @@ struct WorkspaceLineJsonTr {
     Q_DECLARE_TR_FUNCTIONS(WorkspaceFile)
 };
 
-using protocol::failure;
-using protocol::Outcome;
+using base::failure;
+using base::Outcome;
 
 // The line kinds in link::LineSettings::Kind's order, then a recording played as a line.
 const QStringList kKinds = {QStringLiteral("serial"), QStringLiteral("tcp"), QStringLiteral("demo"),

@@ -29,7 +29,7 @@ QByteArray timeText(qint64 ms) {
     return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs).toUtf8();
 }
 
-tipscope::protocol::Outcome<std::unique_ptr<ChartRecording>>
+tipscope::base::Outcome<std::unique_ptr<ChartRecording>>
 readBytes(QByteArray bytes, const ChartCsvReader::Options &options = {}) {
     QBuffer buffer(&bytes);
     buffer.open(QIODevice::ReadOnly);

@@ -1,6 +1,6 @@
 // readJsonObject(): every way a small JSON settings file can fail comes back as its own kind, so
 // each reader can say it in its own words; a good file comes back as its object.
-#include "model/io/jsonfile.h"
+#include "base/jsonfile.h"
 #include "testmain.h"
 
 #include <QTemporaryDir>
@@ -8,7 +8,7 @@
 
 namespace tst_jsonfile {
 
-using namespace tipscope::model::io;
+using namespace tipscope::base::io;
 
 namespace {
 QString writeFile(const QTemporaryDir &dir, const QString &name, const QByteArray &bytes) {

@@ -1,13 +1,13 @@
 // The one CSV helper: every text comes back from its cell unchanged (line breaks aside, which
 // become spaces so a record stays one line), and only cells that need quotes get them.
-#include "model/io/csv.h"
+#include "base/csv.h"
 #include "testmain.h"
 
 #include <QTest>
 
 namespace tst_csv {
 
-using namespace tipscope::model;
+using namespace tipscope::base;
 
 class TestCsv : public QObject {
     Q_OBJECT

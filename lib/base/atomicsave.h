@@ -7,19 +7,19 @@
 // monitor CSV) are not saves and do not come here.
 #pragma once
 
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 
 #include <QByteArray>
 #include <QIODevice>
 #include <QString>
 #include <functional>
 
-namespace tipscope::model::io {
+namespace tipscope::base::io {
 
-[[nodiscard]] protocol::Outcome<void> saveAtomically(const QString &path, const QByteArray &bytes);
+[[nodiscard]] base::Outcome<void> saveAtomically(const QString &path, const QByteArray &bytes);
 // The same for a file too big to build in memory first (a day of a chart as CSV): `write` fills
 // the device and returns false when writing failed.
-[[nodiscard]] protocol::Outcome<void> saveAtomically(const QString &path,
-                                                     const std::function<bool(QIODevice &)> &write);
+[[nodiscard]] base::Outcome<void> saveAtomically(const QString &path,
+                                                 const std::function<bool(QIODevice &)> &write);
 
-} // namespace tipscope::model::io
+} // namespace tipscope::base::io

@@ -13,7 +13,7 @@
 #include <QString>
 #include <QVarLengthArray>
 
-namespace tipscope::model::csv {
+namespace tipscope::base::csv {
 
 [[nodiscard]] QString quoted(const QString &cell);
 
@@ -34,4 +34,4 @@ private:
 // False when a quoted cell is not closed.
 [[nodiscard]] bool splitLine(QByteArrayView line, Cells &cells);
 
-} // namespace tipscope::model::csv
+} // namespace tipscope::base::csv

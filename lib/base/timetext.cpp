@@ -2,7 +2,7 @@
 
 #include <QLocale>
 
-namespace tipscope::model {
+namespace tipscope::base {
 
 QString isoTimeWithOffset(const QDateTime &time) {
     if (!time.isValid())
@@ -21,4 +21,4 @@ QString secondsText(qint64 ms) {
     return QLocale().toString(double(ms) / 1000, 'f', 1);
 }
 
-} // namespace tipscope::model
+} // namespace tipscope::base

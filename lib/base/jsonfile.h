@@ -7,7 +7,7 @@
 #include <QString>
 #include <variant>
 
-namespace tipscope::model::io {
+namespace tipscope::base::io {
 
 struct JsonFileProblem {
     enum class Kind {
@@ -24,4 +24,4 @@ struct JsonFileProblem {
 [[nodiscard]] std::variant<QJsonObject, JsonFileProblem> readJsonObject(const QString &path,
                                                                         qint64 maxBytes);
 
-} // namespace tipscope::model::io
+} // namespace tipscope::base::io

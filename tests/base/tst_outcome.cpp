@@ -1,13 +1,13 @@
 // Outcome carries either the value or the reason, never both, whatever the types: a QString
 // value beside a QString reason, nothing at all (Outcome<void>), or an error type of its own.
-#include "protocol/outcome.h"
+#include "base/outcome.h"
 #include "testmain.h"
 
 #include <QTest>
 
 namespace tst_outcome {
 
-using namespace tipscope::protocol;
+using namespace tipscope::base;
 
 namespace {
 

@@ -21,7 +21,7 @@
 #include <utility>
 #include <variant>
 
-namespace tipscope::protocol {
+namespace tipscope::base {
 
 // The failing half of an Outcome, so `return failure(why);` converts to any Outcome<T, E>.
 template <typename E> struct Failure { E error; };
@@ -79,4 +79,4 @@ private:
     bool m_ok = true;
 };
 
-} // namespace tipscope::protocol
+} // namespace tipscope::base

@@ -7,7 +7,7 @@
 #include <QDateTime>
 #include <QString>
 
-namespace tipscope::model {
+namespace tipscope::base {
 
 // "2024-05-01T10:02:03.123+02:00": the local time with its offset; empty for an invalid time.
 [[nodiscard]] QString isoTimeWithOffset(const QDateTime &time);
@@ -16,4 +16,4 @@ namespace tipscope::model {
 // "4.2": a duration in seconds with one decimal, in the user's locale (people read it).
 [[nodiscard]] QString secondsText(qint64 ms);
 
-} // namespace tipscope::model
+} // namespace tipscope::base

@@ -1,6 +1,6 @@
 #include "filenamepart.h"
 
-namespace tipscope::model::io {
+namespace tipscope::base::io {
 
 QString fileNamePart(const QString &name) {
     QString part;
@@ -16,4 +16,4 @@ QString fileNamePart(const QString &name) {
     return part;
 }
 
-} // namespace tipscope::model::io
+} // namespace tipscope::base::io

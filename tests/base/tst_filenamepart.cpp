@@ -1,7 +1,7 @@
 // io::fileNamePart(): a workspace line's name becomes part of a file name (monitor --csv's file
 // per line) and can never take the file out of its folder (issue 38: a line named
 // "/../../ESCAPED" wrote two folders up).
-#include "model/io/filenamepart.h"
+#include "base/filenamepart.h"
 #include "testmain.h"
 
 #include <QDir>
@@ -10,8 +10,8 @@
 
 namespace tst_filenamepart {
 
-using tipscope::model::io::fileNamePart;
-using tipscope::model::io::kFileNamePartChars;
+using tipscope::base::io::fileNamePart;
+using tipscope::base::io::kFileNamePartChars;
 
 class TestFileNamePart : public QObject {
     Q_OBJECT

@@ -1,8 +1,8 @@
-#include "model/io/csv.h"
+#include "base/csv.h"
 
 #include <cstring>
 
-namespace tipscope::model::csv {
+namespace tipscope::base::csv {
 
 namespace {
 // A line with quotes: each cell copied with its quotes removed (a quote opens a quoted part only
@@ -70,4 +70,4 @@ bool splitLine(QByteArrayView line, Cells &cells) {
     }
 }
 
-} // namespace tipscope::model::csv
+} // namespace tipscope::base::csv

@@ -2,7 +2,7 @@
 
 #include <QCoreApplication>
 
-namespace tipscope::protocol {
+namespace tipscope::base {
 
 namespace {
 struct ElideTr {
@@ -39,4 +39,4 @@ QString elided(const QString &text, int maxChars) {
     return ElideTr::tr("%1… (%2 characters)").arg(out).arg(characters);
 }
 
-} // namespace tipscope::protocol
+} // namespace tipscope::base

@@ -4,7 +4,7 @@
 #include <QJsonDocument>
 #include <QJsonParseError>
 
-namespace tipscope::model::io {
+namespace tipscope::base::io {
 
 std::variant<QJsonObject, JsonFileProblem> readJsonObject(const QString &path, qint64 maxBytes) {
     QFile file(path);
@@ -23,4 +23,4 @@ std::variant<QJsonObject, JsonFileProblem> readJsonObject(const QString &path, q
     return doc.object();
 }
 
-} // namespace tipscope::model::io
+} // namespace tipscope::base::io

@@ -1,6 +1,6 @@
 // The one atomic-save helper: a save replaces the file whole, and a save that cannot be done
 // leaves what was there, leaves no temporary file behind, and says which file and why.
-#include "model/io/atomicsave.h"
+#include "base/atomicsave.h"
 #include "testmain.h"
 
 #include <QDir>
@@ -10,7 +10,7 @@
 
 namespace tst_atomicsave {
 
-using namespace tipscope::model;
+using namespace tipscope::base;
 
 class TestAtomicSave : public QObject {
     Q_OBJECT

@@ -11,7 +11,7 @@
 
 #include <QString>
 
-namespace tipscope::protocol {
+namespace tipscope::base {
 
 inline constexpr int kElideChars = 40;
 inline constexpr int kElidePathChars = 160;
@@ -21,4 +21,4 @@ inline constexpr int kElidePathChars = 160;
     return elided(path, kElidePathChars);
 }
 
-} // namespace tipscope::protocol
+} // namespace tipscope::base

@@ -11,10 +11,10 @@
 
 #include <QString>
 
-namespace tipscope::model::io {
+namespace tipscope::base::io {
 
 inline constexpr int kFileNamePartChars = 48;
 
 [[nodiscard]] QString fileNamePart(const QString &name);
 
-} // namespace tipscope::model::io
+} // namespace tipscope::base::io

@@ -1,13 +1,13 @@
 // The one rule for echoing input in messages: short input whole, long input cut with its length,
 // control characters by their code.
-#include "protocol/elide.h"
+#include "base/elide.h"
 #include "testmain.h"
 
 #include <QTest>
 
 namespace tst_elide {
 
-using namespace tipscope::protocol;
+using namespace tipscope::base;
 
 class TestElide : public QObject {
     Q_OBJECT
