@@ -138,12 +138,14 @@ int PollScheduler::adaptedInterval(const Item &i, int iv) const {
         return iv;
     if (i.role == Role::Status)
         return iv * kRestFactor;
-    if (inJoint(i)) // the tip's readings place the joint; the power's only sum its heat
-        return i.role == Role::TipTemperature ? qMax(kFastestMs, iv / kBusyFactor) : iv;
+    // Every port's tip alike, busy or not: a joint's start is timed by the last reading before
+    // it, and the return's fit is limited by the readings' wobble, not by a busy tip's rate.
+    if (i.role == Role::TipTemperature)
+        return qMax(kFastestMs, iv / kWatchFactor);
+    if (inJoint(i)) // a busy port's power sums the joint's heat
+        return iv;
     if (i.role == Role::Power) // a resting port's: not needed to see a joint begin
         return iv * kRestFactor;
-    if (i.role == Role::TipTemperature) // a resting port's: a joint's start is timed by it
-        return qMax(kFastestMs, iv / kWatchFactor);
     return iv;
 }
 
@@ -182,7 +184,7 @@ void PollScheduler::setFillWire(bool on) {
 
 PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
     Item *best = nullptr;
-    Item *bestTip = nullptr; // of a port in a joint
+    Item *bestTip = nullptr; // while a port is in a joint
     double bestShare = -1, bestTipShare = -1;
     for (Item &i : m_items) {
         if (i.inFlight || !i.parameter || i.pollClass != PollClass::Live || i.dueMs >= kNever ||
@@ -195,15 +197,16 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
             bestShare = share;
         }
         if (iv > 0 && share > bestTipShare && i.role == protocol::Role::TipTemperature &&
-            inJoint(i) && now - i.sentMs >= kSpareGapMs) {
+            !m_busy.isEmpty() && now - i.sentMs >= kSpareGapMs) {
             bestTip = &i;
             bestTipShare = share;
         }
     }
-    // What the wire has to spare while a joint is under way goes to its tip, up to a reading
-    // every kSpareGapMs: the joint is measured from those readings, while every other value is
-    // still read at its own rate. Beyond that (a line faster than any station's, the demo's
-    // unpaced one) the spare goes round the live values as when no port is busy.
+    // What the wire has to spare while a joint is under way goes to the tips, every port's
+    // alike, each up to a reading every kSpareGapMs: the busy port's joint is measured from its
+    // readings and the next joint on any other port is timed from theirs, while every other
+    // value is still read at its own rate. Beyond that (a line faster than any station's, the
+    // demo's unpaced one) the spare goes round the live values as when no port is busy.
     return bestTip ? bestTip : best;
 }
 

@@ -20,16 +20,18 @@
 // busy while its last tip reading is more than kBusyBelowK from its setpoint or its power is
 // above kBusyPowerShare of full scale; a resting one (stand, sleep, hibernation, cooling, no tool,
 // a port error) only while its tip climbs kWakeRiseK above its lowest reading since it rested, a
-// wake, a tool put back or a fault cleared that its readings have not told yet. A busy port's tip
-// temperature is due kBusyFactor times as often as the live interval says (never more often than
-// kFastestMs), its power at the live interval, and a port turning busy has them polled at once,
-// and its status, setpoint, tool and error too (a tip leaving its band may be a tool put in its
-// stand, asleep or taken out, or a fault: an event to stamp when the tip shows it). While any port
-// is busy the line fills its wire (below) and what it has to spare goes to the busy tips, so a
-// joint is read as finely as the wire allows; the values that can wait a joint out (the countdown
-// to sleep, the transistor's temperature) are due kRestFactor times less often meanwhile. A resting
-// port's tip is due kWatchFactor times as often as the live interval, because a joint's start can
-// be timed no finer than the last reading before it. Values that rarely change are due kRestFactor
+// wake, a tool put back or a fault cleared that its readings have not told yet. Every port's tip
+// is due kWatchFactor times as often as the live interval says (never more often than
+// kFastestMs), busy or not: a joint's start can be timed no finer than the last reading before
+// it, and a return's fit is limited by the readings' wobble long before a busy tip's rate
+// (docs/joints.md, "What limits the accuracy"). A busy port's power is due at the live interval,
+// and a port turning busy has its tip and power polled at once, and its status, setpoint, tool
+// and error too (a tip leaving its band may be a tool put in its stand, asleep or taken out, or a
+// fault: an event to stamp when the tip shows it). While any port is busy the line fills its wire
+// (below) and what it has to spare goes to the tips, every port's alike, so a joint and the next
+// one's start are read as finely as the wire allows; the values that can wait a joint out (the
+// countdown to sleep, the transistor's temperature) are due kRestFactor times less often
+// meanwhile. Values that rarely change are due kRestFactor
 // times less often: a port's status among the live values, its setpoint and its connected tool; so
 // is a resting port's power, which is not needed to see a joint begin. Errors and alarms keep their
 // interval: a fault is never reported later for it. When the wire is full, the due live value
@@ -40,10 +42,10 @@
 // Filling the wire (setFillWire(), off by default; a Workspace turns it on; always while a port is
 // busy, adaptive) polls a line at the rate its wire carries rather than at its intervals: when a
 // slot is free and nothing is due, it goes to the live value furthest along its own interval, so
-// every live value is read as often as the wire allows, each in proportion to its rate (a resting
-// port's tip still twice as often as its live interval says relative to its power, and so on),
-// but for a busy port's tip, which takes every such slot while a joint is under way. Only live
-// values are read early: errors, settings, counters and identity keep their intervals.
+// every live value is read as often as the wire allows, each in proportion to its rate (a tip
+// still twice as often as its live interval says relative to its power, and so on), but for the
+// tips, which take every such slot while a joint is under way. Only live values are read early:
+// errors, settings, counters and identity keep their intervals.
 #pragma once
 
 #include "model/device/parameter.h"
@@ -91,7 +93,6 @@ public:
     // reading since it rested: a wake, before the status says so.
     static constexpr int kWakeRiseK = 8;
     static constexpr double kBusyPowerShare = 0.6;
-    static constexpr int kBusyFactor = 4;
     static constexpr int kWatchFactor = 2;
     static constexpr int kRestFactor = 4;
     static constexpr int kFastestMs = 25;
