@@ -66,6 +66,8 @@ void PollScheduler::removeDevice(DeviceModel *device) {
         it = it->first == device ? m_busy.erase(it) : std::next(it);
     for (auto it = m_restLow.begin(); it != m_restLow.end();)
         it = it.key().first == device ? m_restLow.erase(it) : std::next(it);
+    for (auto it = m_fallUntil.begin(); it != m_fallUntil.end();)
+        it = it.key().first == device ? m_fallUntil.erase(it) : std::next(it);
     for (auto it = m_resting.begin(); it != m_resting.end();)
         it = it->first == device ? m_resting.erase(it) : std::next(it);
 }
@@ -167,6 +169,7 @@ double PollScheduler::urgency(const Item &i, qint64 now) const {
 void PollScheduler::setAdaptive(bool on) {
     m_adaptive = on;
     m_busy.clear();
+    m_fallUntil.clear();
     updateIntervals();
     const qint64 now = nowMs();
     for (Item &i : m_items)
@@ -184,8 +187,9 @@ void PollScheduler::setFillWire(bool on) {
 
 PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
     Item *best = nullptr;
-    Item *bestTip = nullptr; // while a port is in a joint
-    double bestShare = -1, bestTipShare = -1;
+    Item *bestTip = nullptr;    // while a port is in a joint
+    Item *fallingTip = nullptr; // of a port that has just turned busy
+    double bestShare = -1, bestTipShare = -1, fallingShare = -1;
     for (Item &i : m_items) {
         if (i.inFlight || !i.parameter || i.pollClass != PollClass::Live || i.dueMs >= kNever ||
             i.parameter->isRefused())
@@ -196,18 +200,27 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
             best = &i;
             bestShare = share;
         }
-        if (iv > 0 && share > bestTipShare && i.role == protocol::Role::TipTemperature &&
-            !m_busy.isEmpty() && now - i.sentMs >= kSpareGapMs) {
-            bestTip = &i;
-            bestTipShare = share;
+        if (iv > 0 && i.role == protocol::Role::TipTemperature && !m_busy.isEmpty() &&
+            now - i.sentMs >= kSpareGapMs) {
+            if (share > bestTipShare) {
+                bestTip = &i;
+                bestTipShare = share;
+            }
+            const auto fall = m_fallUntil.constFind({i.device, i.port});
+            if (fall != m_fallUntil.cend() && now < *fall && share > fallingShare) {
+                fallingTip = &i;
+                fallingShare = share;
+            }
         }
     }
-    // What the wire has to spare while a joint is under way goes to the tips, every port's
-    // alike, each up to a reading every kSpareGapMs: the busy port's joint is measured from its
-    // readings and the next joint on any other port is timed from theirs, while every other
-    // value is still read at its own rate. Beyond that (a line faster than any station's, the
-    // demo's unpaced one) the spare goes round the live values as when no port is busy.
-    return bestTip ? bestTip : best;
+    // What the wire has to spare while a joint is under way goes to the tips, up to a reading
+    // every kSpareGapMs each: first to a port that has just turned busy, for kFallWatchMs, as the
+    // joint's start is traced back along its fall and its lowest point is placed among the
+    // readings around it; then to every port's alike, as the return is placed by a fit that the
+    // readings' wobble limits, and the next joint on any other port is timed from theirs. Every
+    // other value is still read at its own rate. Beyond that (a line faster than any station's,
+    // the demo's unpaced one) the spare goes round the live values as when no port is busy.
+    return fallingTip ? fallingTip : bestTip ? bestTip : best;
 }
 
 namespace {
@@ -291,11 +304,13 @@ void PollScheduler::followBusy(DeviceModel *device, int port, protocol::Role rea
         return;
     if (!busy) {
         m_busy.remove(key);
+        m_fallUntil.remove(key);
         updateIntervals(m_busy.isEmpty() ? nullptr : device, m_busy.isEmpty() ? -1 : port);
         return;
     }
     const bool first = m_busy.isEmpty();
     m_busy.insert(key);
+    m_fallUntil.insert(key, now + kFallWatchMs);
     updateIntervals(first ? nullptr : device, first ? -1 : port);
     for (Item &i : m_items)
         if (i.device == device && i.port == port && !i.inFlight &&

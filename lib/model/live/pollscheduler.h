@@ -28,7 +28,8 @@
 // and a port turning busy has its tip and power polled at once, and its status, setpoint, tool
 // and error too (a tip leaving its band may be a tool put in its stand, asleep or taken out, or a
 // fault: an event to stamp when the tip shows it). While any port is busy the line fills its wire
-// (below) and what it has to spare goes to the tips, every port's alike, so a joint and the next
+// (below) and what it has to spare goes to the tips: for kFallWatchMs to a port that has just
+// turned busy (its fall and lowest point), then to every port's alike, so a joint and the next
 // one's start are read as finely as the wire allows; the values that can wait a joint out (the
 // countdown to sleep, the transistor's temperature) are due kRestFactor times less often
 // meanwhile. Values that rarely change are due kRestFactor
@@ -94,6 +95,9 @@ public:
     static constexpr int kWakeRiseK = 8;
     static constexpr double kBusyPowerShare = 0.6;
     static constexpr int kWatchFactor = 2;
+    // How long a port that has just turned busy takes the wire's spare first: a joint's fall and
+    // its lowest point (the drops measured take 50 to 400 ms).
+    static constexpr int kFallWatchMs = 500;
     static constexpr int kRestFactor = 4;
     static constexpr int kFastestMs = 25;
 
@@ -153,8 +157,9 @@ private:
     bool m_adaptive = true;
     bool m_fillWire = false;
     QSet<QPair<DeviceModel *, int>> m_busy;
-    QHash<QPair<DeviceModel *, int>, qint64> m_restLow; // a resting port's lowest tip
-    QSet<QPair<DeviceModel *, int>> m_resting;          // ports that rest (stand, no tool, ...)
+    QHash<QPair<DeviceModel *, int>, qint64> m_fallUntil; // turned busy: its fall is watched
+    QHash<QPair<DeviceModel *, int>, qint64> m_restLow;   // a resting port's lowest tip
+    QSet<QPair<DeviceModel *, int>> m_resting;            // ports that rest (stand, no tool, ...)
     qint64 m_holdUntilMs = 0;
     qint64 m_done = 0;
     QElapsedTimer m_clock;

@@ -197,10 +197,10 @@ void TestScheduler::aPortLeavingItsBandHasItsStatusReadAtOnce() {
 }
 
 // Port 2 makes a long joint while the other three rest, at the live and status intervals a
-// session uses, on a paced wire. What the wire has to spare goes to the tips, every port's alike:
-// the busy one is measured from its readings, the next joint's start on any other port is timed
-// from theirs. The busy port's power and the values that can wait (transistor temperature, time
-// to sleep) keep to slower rates.
+// session uses, on a paced wire. What the wire has to spare goes first to port 2's tip while it
+// falls, then to the tips, every port's alike: the busy one is measured from its readings, the
+// next joint's start on any other port is timed from theirs. The busy port's power and the values
+// that can wait (transistor temperature, time to sleep) keep to slower rates.
 void TestScheduler::theWireASpareDuringAJointGoesToEveryTipAlike() {
     SimFixture f(singleDevice(QStringLiteral("DME")));
     PollScheduler s;
@@ -221,8 +221,6 @@ void TestScheduler::theWireASpareDuringAJointGoesToEveryTipAlike() {
     QTRY_VERIFY_WITH_TIMEOUT(!s.isBusy(st.get(), 1) && !s.isBusy(st.get(), 2) &&
                                  !s.isBusy(st.get(), 3) && !s.isBusy(st.get(), 4),
                              5000);
-    QVERIFY(f.simLine->startJoint(2, 80, 8000));
-    QTRY_VERIFY_WITH_TIMEOUT(s.isBusy(st.get(), 2), 2000);
     int all = 0;
     QMap<QString, int> reads;
     for (Parameter *p : st->parameters())
@@ -230,11 +228,32 @@ void TestScheduler::theWireASpareDuringAJointGoesToEveryTipAlike() {
             ++all;
             ++reads[QString::fromLatin1(p->code())];
         });
-    // Well inside the joint's recovery. An event loop of its own: QTest::qWait() sleeps between
-    // its rounds of events and would leave the wire idle.
-    QEventLoop window;
-    QTimer::singleShot(3000, &window, &QEventLoop::quit);
-    window.exec();
+    // An event loop of its own: QTest::qWait() sleeps between its rounds of events and would
+    // leave the wire idle.
+    const auto runFor = [](int ms) {
+        QEventLoop window;
+        QTimer::singleShot(ms, &window, &QEventLoop::quit);
+        window.exec();
+    };
+    QVERIFY(f.simLine->startJoint(2, 80, 8000));
+    QTRY_VERIFY_WITH_TIMEOUT(s.isBusy(st.get(), 2), 2000);
+    // Just turned busy: the fall and the lowest point, read first.
+    all = 0;
+    reads.clear();
+    runFor(PollScheduler::kFallWatchMs - 100);
+    const QString fall = QStringLiteral("TT1 %1, TT2 %2, TT3 %3, TT4 %4")
+                             .arg(reads.value("TT1"))
+                             .arg(reads.value("TT2"))
+                             .arg(reads.value("TT3"))
+                             .arg(reads.value("TT4"));
+    qInfo().noquote() << "the fall:" << fall;
+    for (const char *other : {"TT1", "TT3", "TT4"})
+        QVERIFY2(2 * reads.value("TT2") >= 3 * reads.value(QLatin1String(other)), qPrintable(fall));
+    runFor(200);
+    // Then well inside the joint's recovery.
+    all = 0;
+    reads.clear();
+    runFor(3000);
     QVERIFY(s.isBusy(st.get(), 2));
     QStringList counts;
     for (auto it = reads.begin(); it != reads.end(); ++it)
