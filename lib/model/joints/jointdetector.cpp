@@ -379,6 +379,15 @@ double JointDetector::wobbleReachK() const {
                                            kRoundingSigmaK * kRoundingSigmaK));
 }
 
+// The readings around the return bracket it, give or take how far the wobble may carry a reading
+// across the edge: a curve crossing outside that, at `slopePerMs`, is not this return.
+bool JointDetector::nearTheReturn(const Return &r, double crossingMs, double slopePerMs) const {
+    const double reach = wobbleReachK() / slopePerMs;
+    const double below = double(m_readings.at(r.back - 1).timeMs);
+    const double in = double(m_readings.at(r.back).timeMs);
+    return crossingMs >= below - reach && crossingMs <= in + reach;
+}
+
 // Whether readings scattering `sigma` about a two-parameter fit through `count` of them scatter no
 // more than the settled tip's wobble, allowed the spread a variance has by chance over that many.
 bool JointDetector::withinWobble(double sigma, int count) const {
@@ -404,12 +413,7 @@ std::optional<Approach> JointDetector::approachOf(const Return &r) const {
     const auto approach = fitApproach(rise, setpoint, bandEdge());
     if (!approach)
         return std::nullopt;
-    // The readings around the return bracket it, give or take how far the wobble may carry a
-    // reading across the edge: a curve crossing outside that is not this return.
-    const double reach = wobbleReachK() / approach->slopePerMs(approach->crossingMs);
-    const double below = double(m_readings.at(r.back - 1).timeMs);
-    const double in = double(m_readings.at(r.back).timeMs);
-    if (approach->crossingMs < below - reach || approach->crossingMs > in + reach)
+    if (!nearTheReturn(r, approach->crossingMs, approach->slopePerMs(approach->crossingMs)))
         return std::nullopt;
     const auto parabola = fitPolynomial(rise, 2);
     if (!parabola || approach->sigma <= parabola->sigma)
@@ -437,24 +441,22 @@ std::optional<JointDetector::Crossing> JointDetector::straightClimbOf(const Retu
         return std::nullopt;
     if (!withinWobble(line->sigma, line->count))
         return std::nullopt;
-    const double reach = wobbleReachK() / line->slopePerMs(0);
-    const double below = double(m_readings.at(r.back - 1).timeMs);
-    const double in = double(m_readings.at(r.back).timeMs);
-    const auto t = crossingTime(*line, edge, below - reach, in + reach, r.straightMs);
-    if (!t)
+    const double t = double(line->originMs) + (edge - line->c0) / line->c1 * 1000;
+    if (!nearTheReturn(r, t, line->slopePerMs(t)))
         return std::nullopt;
-    return Crossing{*t, crossingUncertaintyMs(*line, *t)};
+    return Crossing{t, crossingUncertaintyMs(*line, t)};
 }
 
 // The edge's crossing on the way back. A return the readings show to be first order over its
-// whole climb is placed by that curve: tens of kelvin of climb against the same wobble pin it
-// where the few readings around the edge, climbing a few kelvin a second on a slow return, would
-// follow a slow wobble by hundreds of milliseconds. Otherwise, readings a degree apart on a smooth
-// climb: a local fit through the readings around the return (a parabola where there are enough of
-// them, else a line) places it within the two readings around it, finer than either. Readings
-// that wobble more than rounding explains would make that local fit chase the wobble: then a
-// parabola through the readings of a wider window on both sides places it, and its scatter says
-// how sure. Readings further apart than the measurement allows only bound it.
+// whole climb is placed by that curve, a straight one by a line through it: tens of kelvin of
+// climb against the same wobble pin it where the few readings around the edge, climbing a few
+// kelvin a second on a slow return, would follow a slow wobble by hundreds of milliseconds.
+// Otherwise, readings a degree apart on a smooth climb: a local fit through the readings around
+// the return (a parabola where there are enough of them, else a line) places it within the two
+// readings around it, finer than either. Readings that wobble more than rounding explains would
+// make that local fit chase the wobble: then a parabola through the readings of a wider window on
+// both sides places it, and its scatter says how sure. Readings further apart than the
+// measurement allows only bound it.
 void JointDetector::estimateRecovery(JointRecord &joint) const {
     const Return r = returnOf();
     if (r.back < 1)

@@ -17,10 +17,11 @@
 // (jointfit.h): the start is where a line through the first readings of the fall crosses the
 // band's edge, within the last reading before it; the lowest point is the vertex of a parabola
 // through the lowest readings; the recovery is where a first-order return fitted through the
-// whole climb crosses the edge when the readings follow one, else where a local fit through the
-// readings around the return does (a wider one on both sides when they wobble). Each carries its
-// uncertainty; a recovery whose readings are too far apart to place it within kMeasuredWithinMs is
-// only bounded (between the readings around it).
+// whole climb crosses the edge when the readings follow one, else a line through it when they
+// climb straight, else a local fit through the readings around the return (a wider one on both
+// sides when they wobble). Each carries its uncertainty, across both the fit's crossing and the
+// readings around the return where the two disagree; a recovery whose readings are too far apart
+// to place it within kMeasuredWithinMs is only bounded (between the readings around it).
 //
 // Whatever breaks the measurement during a joint ends it: a gap in the readings, the port
 // leaving work (stand, sleep, heater off), another tool or setpoint. If the heater had answered
@@ -129,6 +130,7 @@ private:
     [[nodiscard]] std::optional<Crossing> straightClimbOf(const Return &r) const;
     [[nodiscard]] double wobbleReachK() const;
     [[nodiscard]] bool withinWobble(double sigma, int count) const;
+    [[nodiscard]] bool nearTheReturn(const Return &r, double crossingMs, double slopePerMs) const;
     void settleAfterRecovery(qint64 timeMs);
     [[nodiscard]] double bandEdge() const;
     [[nodiscard]] bool inBand(const PortReading &reading) const;

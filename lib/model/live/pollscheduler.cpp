@@ -63,11 +63,9 @@ void PollScheduler::removeDevice(DeviceModel *device) {
                   m_items.end());
     m_visible.remove(device);
     for (auto it = m_busy.begin(); it != m_busy.end();)
-        it = it->first == device ? m_busy.erase(it) : std::next(it);
+        it = it.key().first == device ? m_busy.erase(it) : std::next(it);
     for (auto it = m_restLow.begin(); it != m_restLow.end();)
         it = it.key().first == device ? m_restLow.erase(it) : std::next(it);
-    for (auto it = m_fallUntil.begin(); it != m_fallUntil.end();)
-        it = it.key().first == device ? m_fallUntil.erase(it) : std::next(it);
     for (auto it = m_resting.begin(); it != m_resting.end();)
         it = it->first == device ? m_resting.erase(it) : std::next(it);
 }
@@ -169,7 +167,6 @@ double PollScheduler::urgency(const Item &i, qint64 now) const {
 void PollScheduler::setAdaptive(bool on) {
     m_adaptive = on;
     m_busy.clear();
-    m_fallUntil.clear();
     updateIntervals();
     const qint64 now = nowMs();
     for (Item &i : m_items)
@@ -206,8 +203,8 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
                 bestTip = &i;
                 bestTipShare = share;
             }
-            const auto fall = m_fallUntil.constFind({i.device, i.port});
-            if (fall != m_fallUntil.cend() && now < *fall && share > fallingShare) {
+            const auto since = m_busy.constFind({i.device, i.port});
+            if (since != m_busy.cend() && now < *since + kFallWatchMs && share > fallingShare) {
                 fallingTip = &i;
                 fallingShare = share;
             }
@@ -304,13 +301,11 @@ void PollScheduler::followBusy(DeviceModel *device, int port, protocol::Role rea
         return;
     if (!busy) {
         m_busy.remove(key);
-        m_fallUntil.remove(key);
         updateIntervals(m_busy.isEmpty() ? nullptr : device, m_busy.isEmpty() ? -1 : port);
         return;
     }
     const bool first = m_busy.isEmpty();
-    m_busy.insert(key);
-    m_fallUntil.insert(key, now + kFallWatchMs);
+    m_busy.insert(key, now);
     updateIntervals(first ? nullptr : device, first ? -1 : port);
     for (Item &i : m_items)
         if (i.device == device && i.port == port && !i.inFlight &&

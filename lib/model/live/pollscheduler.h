@@ -156,10 +156,9 @@ private:
     bool m_running = false;
     bool m_adaptive = true;
     bool m_fillWire = false;
-    QSet<QPair<DeviceModel *, int>> m_busy;
-    QHash<QPair<DeviceModel *, int>, qint64> m_fallUntil; // turned busy: its fall is watched
-    QHash<QPair<DeviceModel *, int>, qint64> m_restLow;   // a resting port's lowest tip
-    QSet<QPair<DeviceModel *, int>> m_resting;            // ports that rest (stand, no tool, ...)
+    QHash<QPair<DeviceModel *, int>, qint64> m_busy;    // busy ports: when each turned busy
+    QHash<QPair<DeviceModel *, int>, qint64> m_restLow; // a resting port's lowest tip
+    QSet<QPair<DeviceModel *, int>> m_resting;          // ports that rest (stand, no tool, ...)
     qint64 m_holdUntilMs = 0;
     qint64 m_done = 0;
     QElapsedTimer m_clock;
